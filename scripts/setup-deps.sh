@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs the Debian packages cmx needs, only those that are missing.
+# Does nothing (and needs no root) when everything is present.
+# Usage: scripts/setup-deps.sh [--fuzz] [--bench]
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libgmp-dev libmpfr-dev libboost-dev   # the core library: GMP, MPFR, Boost headers
+  doctest-dev                           # tests
+  libglpk-dev                           # reference LP backend (tests, fuzz, bench only)
+  libtet1.5-dev                         # TetGen's copy of Shewchuk's predicates (oracle only)
+  libbenchmark-dev                      # bench/
+  python3                               # independent checkers in ../shared/tools
+)
+for arg in "$@"; do
+  case "$arg" in
+    --fuzz) packages+=(clang libclang-rt-14-dev) ;;
+    --bench) packages+=(libcgal-dev) ;;
+    *) echo "setup-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
+  esac
+done
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "setup-deps.sh: installing ${missing[*]}" >&2
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
