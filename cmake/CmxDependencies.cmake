@@ -9,6 +9,7 @@ if(NOT TARGET cmx_gmp)
   add_library(cmx_gmp INTERFACE)
   target_include_directories(cmx_gmp INTERFACE ${GMP_INCLUDE_DIR} ${MPFR_INCLUDE_DIR})
   target_link_libraries(cmx_gmp INTERFACE ${GMPXX_LIBRARY} ${MPFR_LIBRARY} ${GMP_LIBRARY})
+  set_target_properties(cmx_gmp PROPERTIES EXPORT_NAME gmp)
   install(TARGETS cmx_gmp EXPORT cmxTargets)
 endif()
 
