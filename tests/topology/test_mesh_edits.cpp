@@ -1,0 +1,147 @@
+// Local edits keep incidences consistent, orientation consistent and balls balls.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <iterator>
+#include <random>
+
+#include "topology/ball_check.hpp"
+#include "topology/complex_queries.hpp"
+#include "topology/consistency.hpp"
+#include "topology/generators.hpp"
+#include "topology/mesh_edits.hpp"
+
+using namespace cmx::topology;
+
+TEST_CASE("edge split: interior and boundary edges") {
+  GridComplex g = grid_complex(2, 2, 2);
+  TetMesh& m = g.mesh;
+  const VertexId center = 1 + 3 * (1 + 3 * 1);
+  const VertexId corner = 0;
+  // Interior edge center -> (2,2,2)? use a neighbor of the center.
+  const VertexId far = 2 + 3 * (2 + 3 * 2);
+  const std::size_t around = tets_around_edge(m, center, far).size();
+  REQUIRE(around > 0);
+  const std::size_t before = m.num_tets();
+  const SplitResult r = split_edge(m, center, far);
+  REQUIRE(r.ok);
+  CHECK(r.new_vertex == 27);
+  CHECK(r.modified.size() == around);
+  CHECK(r.created.size() == around);
+  CHECK(m.num_tets() == before + around);
+  CHECK(m.tets_of(r.new_vertex).size() == 2 * around);
+  CHECK(tets_around_edge(m, center, far).empty());
+  CHECK(check_incidences(m).ok);
+  CHECK(check_ball(m).ok);
+  // A boundary edge.
+  const SplitResult b = split_edge(m, corner, 1);
+  REQUIRE(b.ok);
+  CHECK(check_incidences(m).ok);
+  CHECK(check_ball(m).ok);
+  CHECK(boundary_vertex_flags(m)[b.new_vertex] == 1);
+  // Not an edge.
+  const SplitResult no = split_edge(m, corner, far);
+  CHECK(!no.ok);
+  CHECK(m.num_vertices() == 29);
+}
+
+TEST_CASE("face split 1->3: interior face (two tets) and boundary face (one tet)") {
+  TetMesh m = two_tets_sharing_face();
+  const SplitResult r = split_face(m, 1, 2, 3);
+  REQUIRE(r.ok);
+  CHECK(r.modified.size() == 2);
+  CHECK(r.created.size() == 4);
+  CHECK(m.num_tets() == 6);
+  CHECK(check_incidences(m).ok);
+  CHECK(check_ball(m).ok);
+  CHECK(boundary_vertex_flags(m)[r.new_vertex] == 0);  // interior now
+  const SplitResult s = split_face(m, 0, 1, 2);  // boundary face
+  REQUIRE(s.ok);
+  CHECK(s.created.size() == 2);
+  CHECK(m.num_tets() == 8);
+  CHECK(check_incidences(m).ok);
+  CHECK(check_ball(m).ok);
+  CHECK(!split_face(m, 0, 1, 4).ok);
+}
+
+TEST_CASE("random splits keep a consistent ball") {
+  GridComplex g = grid_complex(3, 3, 2);
+  TetMesh& m = g.mesh;
+  std::mt19937_64 rng(3);
+  for (int step = 0; step < 60; ++step) {
+    const std::vector<TetId> live = m.live_tets();
+    const Tet t = m.tet(live[rng() % live.size()]);
+    const int i = static_cast<int>(rng() % 4), j = (i + 1 + static_cast<int>(rng() % 3)) % 4;
+    SplitResult r;
+    if (step % 2 == 0) {
+      r = split_edge(m, t[i], t[j]);
+    } else {
+      const Triangle f = tet_face(t, i);
+      r = split_face(m, f[0], f[1], f[2]);
+    }
+    REQUIRE(r.ok);
+    const ConsistencyVerdict c = check_incidences(m);
+    REQUIRE_MESSAGE(c.ok, c.message);
+    const BallVerdict b = check_ball(m);
+    REQUIRE_MESSAGE(b.ok, b.message);
+  }
+}
+
+TEST_CASE("edge collapse: link condition refuses pinches, accepted collapses keep a ball") {
+  // A single tet: collapsing any edge would flatten it; refused.
+  TetMesh one = single_tet();
+  CHECK(!satisfies_link_condition(one, 0, 1));
+  CHECK(!collapse_edge(one, 0, 1).ok);
+  CHECK(one.num_tets() == 1);
+  // The diagonal of a single cube is an interior edge between two boundary vertices: the plain
+  // link condition holds, the boundary rule refuses (the collapse would pinch the boundary).
+  {
+    const GridComplex cube = grid_complex(1, 1, 1);
+    const SimplexSet la = vertex_link(cube.mesh, 0), lb = vertex_link(cube.mesh, 7), lab = edge_link(cube.mesh, 0, 7);
+    std::vector<VertexId> common;
+    std::set_intersection(la.vertices.begin(), la.vertices.end(), lb.vertices.begin(), lb.vertices.end(),
+                          std::back_inserter(common));
+    CHECK(common == lab.vertices);
+    CHECK(!satisfies_link_condition(cube.mesh, 0, 7));
+  }
+  // Undo an edge split by collapsing the new vertex.
+  GridComplex g = grid_complex(2, 2, 2);
+  const std::size_t tets = g.mesh.num_tets();
+  const VertexId center = 13, far = 26;
+  const SplitResult s = split_edge(g.mesh, center, far);
+  REQUIRE(s.ok);
+  CHECK(satisfies_link_condition(g.mesh, center, s.new_vertex));
+  const CollapseResult c = collapse_edge(g.mesh, center, s.new_vertex);
+  REQUIRE(c.ok);
+  CHECK(g.mesh.num_tets() == tets);
+  CHECK(g.mesh.tets_of(s.new_vertex).empty());
+  CHECK(check_incidences(g.mesh).ok);
+  CHECK(tets_around_edge(g.mesh, center, far).size() == s.modified.size());
+  // Soundness over all edges of a small grid: every accepted collapse leaves a ball (after
+  // dropping the vertex left without tets), and some collapses are refused.
+  const GridComplex h = grid_complex(2, 2, 1);
+  std::size_t accepted = 0, refused = 0;
+  for (VertexId a = 0; a < h.mesh.num_vertices(); ++a)
+    for (VertexId b : vertex_neighbors(h.mesh, a)) {
+      TetMesh m = h.mesh;
+      const CollapseResult r = collapse_edge(m, a, b);
+      if (!r.ok) {
+        ++refused;
+        CHECK(m.num_tets() == h.mesh.num_tets());
+        continue;
+      }
+      ++accepted;
+      REQUIRE(check_incidences(m).ok);
+      // Renumber without b to run the ball check.
+      std::vector<Tet> ts;
+      for (TetId t : m.live_tets()) {
+        Tet x = m.tet(t);
+        for (VertexId& v : x) v = v > b ? v - 1 : v;
+        ts.push_back(x);
+      }
+      const BallVerdict bv = check_ball(TetMesh(m.num_vertices() - 1, ts));
+      CHECK_MESSAGE(bv.ok, bv.message);
+    }
+  CHECK(accepted > 0);
+  CHECK(refused > 0);
+}

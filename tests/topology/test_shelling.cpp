@@ -1,0 +1,175 @@
+// Shelling (paper Sec. 4.3) and its conversion to an expansion sequence (Alg. 2).
+#include <doctest/doctest.h>
+
+#include "topology/ball_check.hpp"
+#include "topology/cluster_links.hpp"
+#include "topology/complex_queries.hpp"
+#include "topology/generators.hpp"
+#include "topology/mesh_edits.hpp"
+#include "topology/nobuenoss.hpp"
+#include "topology/shelling.hpp"
+#include "topo_test_util.hpp"
+
+using namespace cmx::topology;
+using cmx::topology::test::flagged_submesh;
+
+TEST_CASE("shelling of grids: every removal leaves a ball") {
+  for (const GridTriangulation tri : {GridTriangulation::freudenthal, GridTriangulation::reflected}) {
+    const GridComplex g = grid_complex(3, 2, 2, tri);
+    const ShellingResult s = find_shelling(g.mesh);
+    REQUIRE_MESSAGE(s.found, s.message);
+    CHECK(s.order.size() == g.mesh.num_tets());
+    std::vector<char> alive(g.mesh.tet_capacity(), 1);
+    for (std::size_t i = 0; i + 1 < s.order.size(); ++i) {
+      alive[s.order[i]] = 0;
+      std::vector<Tet> rest;
+      for (TetId t : g.mesh.live_tets())
+        if (alive[t]) rest.push_back(g.mesh.tet(t));
+      std::vector<char> used(g.mesh.num_vertices(), 0);
+      for (const Tet& x : rest)
+        for (VertexId v : x) used[v] = 1;
+      const BallVerdict b = check_ball(flagged_submesh(TetMesh(g.mesh.num_vertices(), rest), used));
+      REQUIRE_MESSAGE(b.ok, "after removing " << i + 1 << " tets: " << b.message);
+    }
+  }
+}
+
+TEST_CASE("removability rule: a tet with four shared faces cannot go; a tet pinching an edge cannot go") {
+  const GridComplex g = grid_complex(3, 3, 3);
+  std::vector<char> all(g.mesh.tet_capacity(), 1);
+  const TetAdjacency adj = tet_adjacency(g.mesh);
+  const auto bf = boundary_vertex_flags(g.mesh);
+  std::size_t interior_tets = 0, removable = 0;
+  for (TetId t : g.mesh.live_tets()) {
+    removable += is_shelling_removable(g.mesh, adj, t, all, g.mesh.num_tets()) ? 1 : 0;
+    bool on_boundary = false;
+    for (VertexId v : g.mesh.tet(t)) on_boundary = on_boundary || bf[v];
+    if (!on_boundary) {
+      ++interior_tets;
+      CHECK(!is_shelling_removable(g.mesh, adj, t, all, g.mesh.num_tets()));
+    }
+  }
+  CHECK(interior_tets == 6);
+  CHECK(removable > 0);
+  // Peel two tets of the fan around the diagonal (0,0,0)-(1,1,1) of the corner cell: the
+  // diagonal is then on the boundary, and a fan tet with both faces at the diagonal shared has
+  // t ∩ (rest) a disc but t ∩ boundary not a disc: removing it would pinch the diagonal.
+  const VertexId o = 0, d = 1 + 4 * (1 + 4 * 1);
+  std::vector<TetId> fan = tets_around_edge(g.mesh, o, d);
+  REQUIRE(fan.size() == 6);
+  std::vector<char> rem = all;
+  std::size_t count = g.mesh.num_tets();
+  std::size_t peeled = 0;
+  for (int pass = 0; pass < 6 && peeled < 2; ++pass)
+    for (TetId t : fan)
+      if (rem[t] && peeled < 2 && is_shelling_removable(g.mesh, adj, t, rem, count)) {
+        rem[t] = 0;
+        --count;
+        ++peeled;
+      }
+  REQUIRE(peeled == 2);
+  // Every fan tet still present whose two faces at the diagonal are shared is now blocked.
+  std::size_t blocked = 0;
+  for (TetId t : fan) {
+    if (!rem[t]) continue;
+    int shared_at_diag = 0;
+    const Tet& x = g.mesh.tet(t);
+    for (int i = 0; i < 4; ++i)
+      if (x[i] != o && x[i] != d && adj.neighbor[t][i] != invalid_index && rem[adj.neighbor[t][i]]) ++shared_at_diag;
+    if (shared_at_diag == 2) {
+      CHECK(!is_shelling_removable(g.mesh, adj, t, rem, count));
+      ++blocked;
+    }
+  }
+  CHECK(blocked > 0);
+}
+
+TEST_CASE("Alg. 2: shelling -> expansion sequence, each step leaves a ball and satisfies Eq. (1)") {
+  const GridComplex g = grid_complex(2, 2, 2);
+  const ShellingResult s = find_shelling(g.mesh);
+  REQUIRE(s.found);
+  const ShellingExpansion e = shelling_to_expansion_sequence(g.mesh, s.order);
+  REQUIRE_MESSAGE(e.ok, e.message);
+  CHECK(e.steps.size() == s.order.size() - 1 + 4);
+  std::size_t plain = 0, edge = 0, face = 0;
+  // Replay: every vertex starts unexpanded (boundary included).
+  TetMesh m = g.mesh;
+  std::vector<char> U(m.num_vertices(), 1);
+  ClusterLinkWorkspace ws;
+  std::size_t remaining_cells = s.order.size();
+  for (std::size_t i = 0; i < e.steps.size(); ++i) {
+    const ExpansionStep& st = e.steps[i];
+    if (st.kind == ExpansionStepKind::edge_split) {
+      const SplitResult r = split_edge(m, st.split[0], st.split[1]);
+      REQUIRE(r.ok);
+      CHECK(r.new_vertex == st.vertex);
+      U.push_back(1);
+      ++edge;
+    } else if (st.kind == ExpansionStepKind::face_split) {
+      const SplitResult r = split_face(m, st.split[0], st.split[1], st.split[2]);
+      REQUIRE(r.ok);
+      CHECK(r.new_vertex == st.vertex);
+      U.push_back(1);
+      ++face;
+    } else {
+      ++plain;
+    }
+    if (!st.automatic) CHECK(is_topologically_expandable(m, st.vertex, U, ws));
+    U[st.vertex] = 0;
+    if (i + 4 < e.steps.size()) {
+      --remaining_cells;
+      // The cluster mesh is the closure of the remaining cells: a ball of that many tets.
+      const TetMesh cluster = flagged_submesh(m, U);
+      CHECK(cluster.num_tets() == remaining_cells);
+      const BallVerdict b = check_ball(cluster);
+      REQUIRE_MESSAGE(b.ok, "step " << i << ": " << b.message);
+      const SubcomplexCounts c = subcomplex_counts(m, VertexSubset(U));
+      CHECK(c.euler == 1);
+      CHECK(c.components == 1);
+      CHECK(c.tets == remaining_cells);
+    }
+  }
+  for (char u : U) CHECK(u == 0);
+  CHECK(m.num_vertices() == e.mesh.num_vertices());
+  CHECK(m.num_tets() == e.mesh.num_tets());
+  CHECK(plain > 0);
+  CHECK(edge + face > 0);
+}
+
+TEST_CASE("Furch: greedy shelling peels the unknotted-hole ball but not the knotted-hole ball") {
+  const GridComplex control = unknotted_hole_ball();
+  const ShellingResult ok = find_shelling(control.mesh, {2, 1});
+  CHECK(ok.found);
+  const GridComplex knot = knotted_hole_ball();
+  const ShellingResult no = find_shelling(knot.mesh, {2, 1});
+  CHECK(!no.found);
+  CHECK(no.attempts == 2);
+  CHECK(no.best_removed > 0);
+  CHECK(no.best_removed < knot.mesh.num_tets());
+  CHECK(no.message.find("no shelling found") != std::string::npos);
+  // Alg. 2 on the control: every expanded vertex satisfies Eq. (1) when its turn comes, and
+  // the cluster mesh stays a ball (checked every 2000 steps).
+  const ShellingExpansion e = shelling_to_expansion_sequence(control.mesh, ok.order);
+  REQUIRE(e.ok);
+  TetMesh m = control.mesh;
+  std::vector<char> U(m.num_vertices(), 1);
+  ClusterLinkWorkspace ws;
+  std::size_t failures = 0;
+  for (std::size_t i = 0; i < e.steps.size(); ++i) {
+    const ExpansionStep& st = e.steps[i];
+    if (st.kind != ExpansionStepKind::plain_vertex) {
+      const SplitResult r = st.kind == ExpansionStepKind::edge_split
+                                ? split_edge(m, st.split[0], st.split[1])
+                                : split_face(m, st.split[0], st.split[1], st.split[2]);
+      REQUIRE(r.new_vertex == st.vertex);
+      U.push_back(1);
+    }
+    if (!st.automatic && !is_topologically_expandable(m, st.vertex, U, ws)) ++failures;
+    U[st.vertex] = 0;
+    if (i % 2000 == 1999) {
+      const BallVerdict b = check_ball(flagged_submesh(m, U));
+      CHECK_MESSAGE(b.ok, "step " << i << ": " << b.message);
+    }
+  }
+  CHECK(failures == 0);
+}

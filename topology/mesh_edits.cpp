@@ -1,0 +1,155 @@
+#include "topology/mesh_edits.hpp"
+
+#include <algorithm>
+
+#include "topology/complex_queries.hpp"
+
+namespace cmx::topology {
+namespace {
+
+template <class T>
+bool includes_sorted(const std::vector<T>& big, const std::vector<T>& small) {
+  return std::includes(big.begin(), big.end(), small.begin(), small.end());
+}
+
+template <class T>
+std::vector<T> intersect(const std::vector<T>& x, const std::vector<T>& y) {
+  std::vector<T> out;
+  std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(out));
+  return out;
+}
+
+// Link of v inside the boundary surface: boundary vertices and edges (x,y) with (v,x,y) a
+// boundary face. Sorted.
+void boundary_link(const TetMesh& m, VertexId v, std::vector<VertexId>& verts, std::vector<Edge>& edges) {
+  verts.clear();
+  edges.clear();
+  for (TetId t : m.tets_of(v)) {
+    const Tet& x = m.tet(t);
+    for (int i = 0; i < 4; ++i) {
+      if (x[i] == v) continue;
+      const Triangle f = tet_face(x, i);
+      if (tets_around_face(m, f[0], f[1], f[2]).size() != 1) continue;
+      VertexId o[2];
+      int n = 0;
+      for (VertexId w : f)
+        if (w != v) o[n++] = w;
+      verts.push_back(o[0]);
+      verts.push_back(o[1]);
+      edges.push_back(o[0] < o[1] ? Edge{o[0], o[1]} : Edge{o[1], o[0]});
+    }
+  }
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+}
+
+}  // namespace
+
+SplitResult split_edge(TetMesh& m, VertexId a, VertexId b) {
+  SplitResult r;
+  if (a >= m.num_vertices() || b >= m.num_vertices() || a == b) {
+    r.message = "invalid edge";
+    return r;
+  }
+  const std::vector<TetId> around = tets_around_edge(m, a, b);
+  if (around.empty()) {
+    r.message = "edge (" + std::to_string(a) + " " + std::to_string(b) + ") is in no tet";
+    return r;
+  }
+  const VertexId mid = m.add_vertex();
+  r.new_vertex = mid;
+  for (TetId t : around) {
+    Tet first = m.tet(t), second = m.tet(t);
+    first[local_index(first, b)] = mid;   // (.., a, .., m, ..)
+    second[local_index(second, a)] = mid; // (.., m, .., b, ..)
+    m.set_tet(t, first);
+    r.modified.push_back(t);
+    r.created.push_back(m.add_tet(second));
+  }
+  r.ok = true;
+  return r;
+}
+
+SplitResult split_face(TetMesh& m, VertexId a, VertexId b, VertexId c) {
+  SplitResult r;
+  if (a >= m.num_vertices() || b >= m.num_vertices() || c >= m.num_vertices() || a == b || b == c || a == c) {
+    r.message = "invalid face";
+    return r;
+  }
+  const std::vector<TetId> around = tets_around_face(m, a, b, c);
+  if (around.empty()) {
+    r.message = "face (" + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + ") is in no tet";
+    return r;
+  }
+  const VertexId mid = m.add_vertex();
+  r.new_vertex = mid;
+  for (TetId t : around) {
+    const Tet orig = m.tet(t);
+    Tet parts[3] = {orig, orig, orig};
+    parts[0][local_index(orig, a)] = mid;
+    parts[1][local_index(orig, b)] = mid;
+    parts[2][local_index(orig, c)] = mid;
+    m.set_tet(t, parts[0]);
+    r.modified.push_back(t);
+    r.created.push_back(m.add_tet(parts[1]));
+    r.created.push_back(m.add_tet(parts[2]));
+  }
+  r.ok = true;
+  return r;
+}
+
+bool satisfies_link_condition(const TetMesh& m, VertexId a, VertexId b) {
+  if (a == b || a >= m.num_vertices() || b >= m.num_vertices()) return false;
+  const SimplexSet la = vertex_link(m, a), lb = vertex_link(m, b), lab = edge_link(m, a, b);
+  if (lab.vertices.empty()) return false;  // not an edge
+  // Lk(ab) is always inside Lk(a) ∩ Lk(b); equality needs the intersection to be no larger.
+  const auto iv = intersect(la.vertices, lb.vertices);
+  const auto ie = intersect(la.edges, lb.edges);
+  const auto it = intersect(la.triangles, lb.triangles);
+  if (iv != lab.vertices || ie != lab.edges || !it.empty()) return false;
+  // Boundary rule: with a virtual vertex coning off the boundary.
+  std::vector<VertexId> bva, bvb;
+  std::vector<Edge> bea, beb;
+  boundary_link(m, a, bva, bea);
+  boundary_link(m, b, bvb, beb);
+  if (bva.empty() || bvb.empty()) return true;  // at most one endpoint on the boundary
+  // Both on the boundary: ab must be a boundary edge, and the boundary links meet exactly in
+  // Lk_boundary(ab) (the two apexes of the boundary faces at ab) with no common edge.
+  if (!std::binary_search(bva.begin(), bva.end(), b)) return false;
+  std::vector<VertexId> apex;
+  for (VertexId x : lab.vertices) {
+    if (tets_around_face(m, a, b, x).size() == 1) apex.push_back(x);
+  }
+  std::sort(apex.begin(), apex.end());
+  return intersect(bva, bvb) == apex && intersect(bea, beb).empty();
+}
+
+CollapseResult collapse_edge(TetMesh& m, VertexId keep, VertexId gone) {
+  CollapseResult r;
+  if (tets_around_edge(m, keep, gone).empty() || keep == gone) {
+    r.message = "no such edge";
+    return r;
+  }
+  if (!satisfies_link_condition(m, keep, gone)) {
+    r.message = "link condition fails for edge (" + std::to_string(keep) + " " + std::to_string(gone) + ")";
+    return r;
+  }
+  const std::vector<TetId> star(m.tets_of(gone).begin(), m.tets_of(gone).end());
+  for (TetId t : star) {
+    if (contains(m.tet(t), keep)) {
+      m.remove_tet(t);
+      r.removed.push_back(t);
+    } else {
+      Tet x = m.tet(t);
+      x[local_index(x, gone)] = keep;
+      m.set_tet(t, x);
+      r.modified.push_back(t);
+    }
+  }
+  r.ok = true;
+  return r;
+}
+
+}  // namespace cmx::topology

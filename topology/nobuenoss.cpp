@@ -1,0 +1,157 @@
+#include "topology/nobuenoss.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace cmx::topology {
+namespace {
+
+// Turning points of a trefoil-knotted lattice arc, from sampling the trefoil
+// (sin t + 2 sin 2t, cos t - 2 cos 2t, -sin 3t) for t in [pi/2 + 0.25, 5pi/2 - 0.25] at scale
+// (3, 3, 9), rounding to the lattice and joining samples by axis steps. Stored as a table so
+// that the mesh does not depend on libm.
+constexpr std::array<std::int32_t, 3> trefoil_arc[] = {
+    {0,5,7}, {0,4,7}, {0,4,6}, {-1,4,6}, {-1,4,4}, {-1,3,4}, {-1,3,3}, {-2,3,3}, {-2,3,2},
+    {-2,2,2}, {-2,2,0}, {-3,2,0}, {-3,1,0}, {-3,1,-2}, {-3,0,-2}, {-3,0,-4}, {-3,-1,-4},
+    {-4,-1,-4}, {-4,-1,-5}, {-4,-2,-5}, {-4,-2,-7}, {-4,-3,-7}, {-4,-3,-8}, {-4,-4,-8}, {-4,-4,-9},
+    {-4,-6,-9}, {-3,-6,-9}, {-3,-7,-9}, {-3,-7,-8}, {-3,-8,-8}, {-3,-8,-7}, {-2,-8,-7}, {-2,-8,-5},
+    {-2,-9,-5}, {-2,-9,-4}, {-1,-9,-4}, {-1,-9,-1}, {0,-9,-1}, {0,-9,1}, {1,-9,1}, {1,-9,4},
+    {2,-9,4}, {2,-9,5}, {2,-8,5}, {2,-8,7}, {3,-8,7}, {3,-8,8}, {3,-7,8}, {3,-7,9}, {3,-6,9},
+    {4,-6,9}, {4,-4,9}, {4,-4,8}, {4,-3,8}, {4,-3,7}, {4,-2,7}, {4,-2,5}, {4,-1,5}, {4,-1,4},
+    {3,-1,4}, {3,0,4}, {3,0,2}, {3,1,2}, {3,1,0}, {3,2,0}, {2,2,0}, {2,2,-2}, {2,3,-2}, {2,3,-3},
+    {1,3,-3}, {1,3,-4}, {1,4,-4}, {1,4,-6}, {0,4,-6}, {0,4,-7}, {0,5,-7}, {-1,5,-7}, {-1,5,-8},
+    {-2,5,-8}, {-2,6,-8}, {-2,6,-9}, {-4,6,-9}, {-4,6,-8}, {-5,6,-8}, {-5,6,-7}, {-6,6,-7},
+    {-6,6,-5}, {-7,6,-5}, {-7,6,-4}, {-7,5,-4}, {-7,5,-2}, {-8,5,-2}, {-8,5,0}, {-8,4,0}, {-8,4,3},
+    {-8,3,3}, {-8,3,6}, {-8,2,6}, {-8,2,7}, {-8,1,7}, {-8,1,9}, {-7,1,9}, {-7,-1,9}, {-6,-1,9},
+    {-6,-1,8}, {-5,-1,8}, {-5,-2,8}, {-5,-2,7}, {-4,-2,7}, {-4,-2,6}, {-3,-2,6}, {-3,-3,6},
+    {-3,-3,4}, {-2,-3,4}, {-2,-3,3}, {-1,-3,3}, {-1,-3,1}, {0,-3,1}, {0,-3,-1}, {1,-3,-1},
+    {1,-3,-3}, {2,-3,-3}, {2,-3,-4}, {3,-3,-4}, {3,-3,-5}, {3,-2,-5}, {3,-2,-6}, {4,-2,-6},
+    {4,-2,-7}, {5,-2,-7}, {5,-2,-8}, {5,-1,-8}, {6,-1,-8}, {6,-1,-9}, {7,-1,-9}, {7,1,-9},
+    {8,1,-9}, {8,1,-7}, {8,2,-7}, {8,2,-6}, {8,3,-6}, {8,3,-3}, {8,4,-3}, {8,4,0}, {8,5,0},
+    {8,5,2}, {7,5,2}, {7,5,4}, {7,6,4}, {7,6,5}, {6,6,5}, {6,6,7}};
+
+// The same sampling of the unknotted curve (2.5 cos t, 2.5 sin t, 0.3 sin t).
+constexpr std::array<std::int32_t, 3> circle_arc[] = {
+    {-2,7,3}, {-3,7,3}, {-3,7,2}, {-4,7,2}, {-4,6,2}, {-5,6,2}, {-5,5,2}, {-6,5,2}, {-6,4,2},
+    {-6,4,1}, {-7,4,1}, {-7,1,1}, {-7,1,0}, {-7,-1,0}, {-7,-1,-1}, {-7,-4,-1}, {-6,-4,-1},
+    {-6,-4,-2}, {-6,-5,-2}, {-5,-5,-2}, {-5,-6,-2}, {-4,-6,-2}, {-4,-7,-2}, {-3,-7,-2}, {-3,-7,-3},
+    {3,-7,-3}, {3,-7,-2}, {4,-7,-2}, {4,-6,-2}, {5,-6,-2}, {5,-5,-2}, {6,-5,-2}, {6,-4,-2},
+    {6,-4,-1}, {7,-4,-1}, {7,-1,-1}, {7,-1,0}, {7,1,0}, {7,1,1}, {7,4,1}, {6,4,1}, {6,4,2},
+    {6,5,2}, {5,5,2}, {5,6,2}, {4,6,2}, {4,7,2}, {3,7,2}, {3,7,3}, {2,7,3}};
+
+}  // namespace
+
+GridComplex ball_with_hole(std::span<const std::array<std::int32_t, 3>> corners, std::int32_t margin) {
+  if (corners.empty()) return grid_complex(1, 1, 1);
+  // The tunnel as a list of lattice cells.
+  std::vector<std::array<std::int32_t, 3>> cells{corners[0]};
+  for (std::size_t i = 1; i < corners.size(); ++i) {
+    std::array<std::int32_t, 3> q = cells.back();
+    for (int a = 0; a < 3; ++a)
+      while (q[a] != corners[i][a]) {
+        q[a] += corners[i][a] > q[a] ? 1 : -1;
+        cells.push_back(q);
+      }
+  }
+  std::array<std::int32_t, 3> lo = cells[0], hi = cells[0];
+  for (const auto& c : cells)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], c[a]);
+      hi[a] = std::max(hi[a], c[a]);
+    }
+  const std::int32_t top = hi[2] + margin + 1;
+  for (std::int32_t z = corners[0][2] + 1; z <= top; ++z) cells.push_back({corners[0][0], corners[0][1], z});
+  const std::array<std::int32_t, 3> origin{lo[0] - margin, lo[1] - margin, lo[2] - margin};
+  const auto nx = static_cast<std::uint32_t>(hi[0] + margin - origin[0] + 1);
+  const auto ny = static_cast<std::uint32_t>(hi[1] + margin - origin[1] + 1);
+  const auto nz = static_cast<std::uint32_t>(top - origin[2] + 1);
+  std::vector<char> keep(std::size_t{nx} * ny * nz, 1);
+  for (const auto& c : cells) {
+    const auto i = static_cast<std::size_t>(c[0] - origin[0]), j = static_cast<std::size_t>(c[1] - origin[1]),
+               k = static_cast<std::size_t>(c[2] - origin[2]);
+    keep[i + nx * (j + ny * k)] = 0;
+  }
+  return voxel_complex(nx, ny, nz, keep);
+}
+
+GridComplex knotted_hole_ball() { return ball_with_hole(trefoil_arc); }
+
+GridComplex unknotted_hole_ball() { return ball_with_hole(circle_arc); }
+
+namespace {
+
+// Axis-aligned rectangle in design units: the coordinate `axis` is fixed to `at`, the other two
+// range over [lo, hi] (in increasing axis order), minus optional rectangular holes.
+struct Sheet {
+  int axis;
+  int at;
+  std::array<int, 2> lo, hi;
+  std::vector<std::array<int, 4>> holes;  // open holes (lo0, lo1, hi0, hi1)
+};
+
+bool on_sheet(const Sheet& s, const std::array<std::int64_t, 3>& p, std::int64_t unit) {
+  if (p[s.axis] != s.at * unit) return false;
+  const int a0 = s.axis == 0 ? 1 : 0, a1 = s.axis == 2 ? 1 : 2;
+  const std::int64_t u = p[a0], w = p[a1];
+  if (u < s.lo[0] * unit || u > s.hi[0] * unit || w < s.lo[1] * unit || w > s.hi[1] * unit) return false;
+  for (const auto& h : s.holes)
+    if (u > h[0] * unit && u < h[2] * unit && w > h[1] * unit && w < h[3] * unit) return false;
+  return true;
+}
+
+}  // namespace
+
+GridComplex bings_house_nobuenoss(std::uint32_t scale) {
+  // Design units: box [0,10]x[0,4]x[0,8], floor z=4. Tube T1 (x in [2,4], y in [1,3]) leads
+  // from below through the lower room into the upper room; tube T2 (x in [6,8], y in [1,3])
+  // leads from above through the upper room into the lower room. Wall W1 (y=2, x in [0,2],
+  // z in [0,4]) ties T1 to the outer wall x=0; wall W2 (y=2, x in [8,10], z in [4,8]) ties T2 to
+  // the outer wall x=10.
+  std::vector<Sheet> sheets;
+  sheets.push_back({2, 0, {0, 0}, {10, 4}, {{2, 1, 4, 3}}});           // bottom, hole under T1
+  sheets.push_back({2, 8, {0, 0}, {10, 4}, {{6, 1, 8, 3}}});           // top, hole over T2
+  sheets.push_back({2, 4, {0, 0}, {10, 4}, {{2, 1, 4, 3}, {6, 1, 8, 3}}});  // floor
+  sheets.push_back({0, 0, {0, 0}, {4, 8}, {}});                        // x = 0
+  sheets.push_back({0, 10, {0, 0}, {4, 8}, {}});                       // x = 10
+  sheets.push_back({1, 0, {0, 0}, {10, 8}, {}});                       // y = 0
+  sheets.push_back({1, 4, {0, 0}, {10, 8}, {}});                       // y = 4
+  // Tube T1 walls, z in [0,4].
+  sheets.push_back({0, 2, {1, 0}, {3, 4}, {}});
+  sheets.push_back({0, 4, {1, 0}, {3, 4}, {}});
+  sheets.push_back({1, 1, {2, 0}, {4, 4}, {}});
+  sheets.push_back({1, 3, {2, 0}, {4, 4}, {}});
+  // Tube T2 walls, z in [4,8].
+  sheets.push_back({0, 6, {1, 4}, {3, 8}, {}});
+  sheets.push_back({0, 8, {1, 4}, {3, 8}, {}});
+  sheets.push_back({1, 1, {6, 4}, {8, 8}, {}});
+  sheets.push_back({1, 3, {6, 4}, {8, 8}, {}});
+  // Supporting walls.
+  sheets.push_back({1, 2, {0, 0}, {2, 4}, {}});
+  sheets.push_back({1, 2, {8, 4}, {10, 8}, {}});
+
+  const std::int64_t u = std::max<std::uint32_t>(scale, 4) & ~1u;
+  // One cell of margin on each side; the offset is 2 so that design points stay at even grid
+  // coordinates (the reflected triangulation then puts a face diagonal through every crease).
+  const std::int64_t off = 2;
+  const std::uint32_t nx = static_cast<std::uint32_t>(10 * u + 2 * off), ny = static_cast<std::uint32_t>(4 * u + 2 * off),
+                      nz = static_cast<std::uint32_t>(8 * u + 2 * off);
+  auto on_house = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+    const std::array<std::int64_t, 3> p{i - off, j - off, k - off};
+    for (const Sheet& s : sheets)
+      if (on_sheet(s, p, u)) return true;
+    return false;
+  };
+  // Keep exactly the cells with a corner on the house: the house points are then the interior
+  // vertices (features are >= 4 cells apart, so no other point has all 8 cells kept).
+  std::vector<char> keep(std::size_t{nx} * ny * nz, 0);
+  for (std::uint32_t k = 0; k < nz; ++k)
+    for (std::uint32_t j = 0; j < ny; ++j)
+      for (std::uint32_t i = 0; i < nx; ++i) {
+        bool touch = false;
+        for (int c = 0; c < 8 && !touch; ++c) touch = on_house(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+        if (touch) keep[i + std::size_t{nx} * (j + std::size_t{ny} * k)] = 1;
+      }
+  return voxel_complex(nx, ny, nz, keep, GridTriangulation::reflected);
+}
+
+}  // namespace cmx::topology

@@ -1,0 +1,194 @@
+#include "topology/shelling.hpp"
+
+#include <algorithm>
+#include <queue>
+#include <random>
+
+#include "topology/complex_queries.hpp"
+#include "topology/mesh_edits.hpp"
+
+namespace cmx::topology {
+namespace {
+
+// Face i of remaining tet t is shared iff the tet across it (input adjacency) is remaining.
+// Splits done by shelling_to_expansion_sequence only touch removed tets and the current cell,
+// so the input adjacency stays right for the faces of remaining tets.
+bool face_shared(const TetAdjacency& adj, TetId t, int i, const std::vector<char>& remaining) {
+  const TetId n = adj.neighbor[t][i];
+  return n != invalid_index && n < remaining.size() && remaining[n];
+}
+
+bool on_boundary_of_remaining(const TetMesh& m, const TetAdjacency& adj, const std::vector<char>& remaining,
+                              VertexId a, VertexId b /* invalid_index for a vertex */) {
+  for (TetId o : m.tets_of(a)) {
+    if (o >= remaining.size() || !remaining[o]) continue;
+    const Tet& x = m.tet(o);
+    if (b != invalid_index && !contains(x, b)) continue;
+    for (int k = 0; k < 4; ++k)
+      if (x[k] != a && x[k] != b && !face_shared(adj, o, k, remaining)) return true;
+  }
+  return false;
+}
+
+std::size_t others_containing(const TetMesh& m, TetId t, const std::vector<char>& remaining, VertexId a,
+                              VertexId b /* invalid_index for a vertex */) {
+  std::size_t n = 0;
+  for (TetId o : m.tets_of(a)) {
+    if (o == t || o >= remaining.size() || !remaining[o]) continue;
+    if (b == invalid_index || contains(m.tet(o), b)) ++n;
+  }
+  return n;
+}
+
+std::array<bool, 4> shared_faces(const TetAdjacency& adj, TetId t, const std::vector<char>& remaining) {
+  std::array<bool, 4> s{};
+  for (int i = 0; i < 4; ++i) s[i] = face_shared(adj, t, i, remaining);
+  return s;
+}
+
+}  // namespace
+
+bool is_shelling_removable(const TetMesh& m, const TetAdjacency& adj, TetId t, const std::vector<char>& remaining,
+                           std::size_t remaining_count) {
+  if (!m.is_alive(t) || t >= remaining.size() || !remaining[t]) return false;
+  if (remaining_count == 1) return true;
+  const std::array<bool, 4> sh = shared_faces(adj, t, remaining);
+  const int j = static_cast<int>(std::count(sh.begin(), sh.end(), true));
+  if (j == 0 || j == 4) return false;
+  const Tet& x = m.tet(t);
+  // Face i contains every vertex but x[i]. A vertex x[k] lies in a free (shared) face iff some
+  // free (shared) face has i != k; an edge (x[k], x[l]) iff some such face has i != k, l.
+  for (int k = 0; k < 4; ++k) {
+    bool in_free = false, in_shared = false;
+    for (int i = 0; i < 4; ++i)
+      if (i != k) (sh[i] ? in_shared : in_free) = true;
+    if (!in_free && on_boundary_of_remaining(m, adj, remaining, x[k], invalid_index)) return false;
+    if (!in_shared && others_containing(m, t, remaining, x[k], invalid_index) > 0) return false;
+    for (int l = k + 1; l < 4; ++l) {
+      bool e_free = false, e_shared = false;
+      for (int i = 0; i < 4; ++i)
+        if (i != k && i != l) (sh[i] ? e_shared : e_free) = true;
+      if (!e_free && on_boundary_of_remaining(m, adj, remaining, x[k], x[l])) return false;
+      if (!e_shared && others_containing(m, t, remaining, x[k], x[l]) > 0) return false;
+    }
+  }
+  return true;
+}
+
+ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
+  ShellingResult r;
+  const std::vector<TetId> live = m.live_tets();
+  const TetAdjacency adj = tet_adjacency(m);
+  for (std::size_t attempt = 0; attempt < std::max<std::size_t>(options.max_attempts, 1); ++attempt) {
+    ++r.attempts;
+    std::mt19937_64 rng(options.seed + 0x9e3779b97f4a7c15ull * attempt);
+    std::vector<std::uint64_t> key(m.tet_capacity(), 0);
+    for (TetId t : live) key[t] = rng();
+    std::vector<char> remaining(m.tet_capacity(), 0);
+    for (TetId t : live) remaining[t] = 1;
+    std::size_t count = live.size();
+    using Item = std::pair<std::uint64_t, TetId>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+    for (TetId t : live)
+      if (is_shelling_removable(m, adj, t, remaining, count)) queue.push({key[t], t});
+    std::vector<TetId> order;
+    order.reserve(live.size());
+    while (!queue.empty() && count > 0) {
+      const TetId t = queue.top().second;
+      queue.pop();
+      if (!remaining[t] || !is_shelling_removable(m, adj, t, remaining, count)) continue;
+      remaining[t] = 0;
+      --count;
+      order.push_back(t);
+      // Removability can change only for tets sharing a vertex with t.
+      for (VertexId v : m.tet(t))
+        for (TetId o : m.tets_of(v))
+          if (remaining[o] && is_shelling_removable(m, adj, o, remaining, count)) queue.push({key[o], o});
+    }
+    r.best_removed = std::max(r.best_removed, order.size());
+    if (count == 0) {
+      r.found = true;
+      r.order = std::move(order);
+      r.message = "shelling found";
+      return r;
+    }
+  }
+  r.message = "no shelling found within " + std::to_string(r.attempts) + " greedy attempts (best removed " +
+              std::to_string(r.best_removed) + " of " + std::to_string(live.size()) + " tets)";
+  return r;
+}
+
+ShellingExpansion shelling_to_expansion_sequence(const TetMesh& input, const std::vector<TetId>& shelling) {
+  ShellingExpansion out;
+  out.mesh = input;
+  TetMesh& m = out.mesh;
+  std::vector<char> remaining(m.tet_capacity(), 0);
+  for (TetId t : shelling) {
+    if (!m.is_alive(t) || remaining[t]) {
+      out.message = "shelling lists a dead or repeated tet " + std::to_string(t);
+      return out;
+    }
+    remaining[t] = 1;
+  }
+  if (shelling.size() != m.num_tets()) {
+    out.message = "shelling does not list every tet";
+    return out;
+  }
+  std::size_t count = shelling.size();
+  const TetAdjacency adj = tet_adjacency(input);
+  for (std::size_t s = 0; s + 1 < shelling.size(); ++s) {
+    const TetId t = shelling[s];
+    // Splits only touch tets around the split simplex, which (by the removability rule) are t
+    // and already removed tets: t keeps its handle and vertices until it is processed.
+    if (!is_shelling_removable(m, adj, t, remaining, count)) {
+      out.message = "step " + std::to_string(s) + ": tet " + std::to_string(t) + " is not removable";
+      return out;
+    }
+    const Tet x = m.tet(t);
+    const std::array<bool, 4> sh = shared_faces(adj, t, remaining);
+    const int j = static_cast<int>(std::count(sh.begin(), sh.end(), true));
+    ExpansionStep step;
+    step.cell = t;
+    if (j == 1) {
+      for (int i = 0; i < 4; ++i)
+        if (sh[i]) step.vertex = x[i];
+    } else if (j == 2) {
+      VertexId e[2];
+      int n = 0;
+      for (int i = 0; i < 4; ++i)
+        if (sh[i]) e[n++] = x[i];
+      const SplitResult sr = split_edge(m, e[0], e[1]);
+      step.kind = ExpansionStepKind::edge_split;
+      step.split = {e[0], e[1], invalid_index};
+      step.vertex = sr.new_vertex;
+    } else {
+      int free_face = 0;
+      for (int i = 0; i < 4; ++i)
+        if (!sh[i]) free_face = i;
+      const Triangle f = tet_face(x, free_face);
+      const SplitResult sr = split_face(m, f[0], f[1], f[2]);
+      step.kind = ExpansionStepKind::face_split;
+      step.split = f;
+      step.vertex = sr.new_vertex;
+    }
+    // Tets created by the split are parts of t or of removed tets: never "remaining".
+    remaining.resize(m.tet_capacity(), 0);
+    remaining[t] = 0;
+    --count;
+    out.steps.push_back(step);
+  }
+  // The last cell: expand three of its vertices; the fourth follows automatically.
+  const Tet last = m.tet(shelling.back());
+  for (int i = 0; i < 4; ++i) {
+    ExpansionStep step;
+    step.cell = shelling.back();
+    step.vertex = last[i];
+    step.automatic = i == 3;
+    out.steps.push_back(step);
+  }
+  out.ok = true;
+  out.message = "ok";
+  return out;
+}
+
+}  // namespace cmx::topology
