@@ -1,0 +1,59 @@
+#include "io/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <vector>
+
+#include "io/io_error.hpp"
+
+namespace cmx::io {
+namespace {
+
+std::string errno_text() { return std::strerror(errno); }
+
+mode_t default_file_mode() {
+  // mkstemp creates 0600; a normal output file gets 0666 minus the umask, as ofstream would.
+  const mode_t mask = umask(0);
+  umask(mask);
+  return mode_t(0666) & ~mask;
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& body) {
+  std::string pattern = path + ".tmp.XXXXXX";
+  std::vector<char> name(pattern.begin(), pattern.end());
+  name.push_back('\0');
+  const int fd = mkstemp(name.data());
+  if (fd < 0) throw IoError(ErrorKind::write_failed, path, 0, "cannot create a temporary file next to it: " + errno_text());
+  const std::string tmp = name.data();
+  fchmod(fd, default_file_mode());
+  close(fd);
+  try {
+    {
+      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+      if (!out) throw IoError(ErrorKind::write_failed, path, 0, "cannot open temporary file " + tmp);
+      body(out);
+      out.flush();
+      if (!out) throw IoError(ErrorKind::write_failed, path, 0, "write error (disk full?)");
+    }
+    const int sync_fd = open(tmp.c_str(), O_RDONLY);
+    if (sync_fd >= 0) {
+      fsync(sync_fd);
+      close(sync_fd);
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0)
+      throw IoError(ErrorKind::write_failed, path, 0, "cannot rename the temporary file into place: " + errno_text());
+  } catch (...) {
+    std::remove(tmp.c_str());
+    throw;
+  }
+}
+
+}  // namespace cmx::io

@@ -1,0 +1,40 @@
+#pragma once
+// Tetrahedral mesh readers. Each format has an in-memory entry point (bytes + a name used in
+// error messages; what the fuzzers call) and every reader validates and normalises the result as
+// documented in io/tet_mesh_data.hpp and docs/formats.md. Errors: IoError naming file and line.
+//
+// Formats (docs/formats.md has the details and each format's orientation convention):
+//   .ovm   OpenVolumeMesh ASCII (property blocks skipped, VProp strings kept; the exact
+//          `str_exact_position` property replaces the double positions by default)
+//   .vtk   legacy VTK UNSTRUCTURED_GRID, 4.2 CELLS and 5.1 OFFSETS/CONNECTIVITY, ASCII or BINARY
+//   .vtu   VTK XML UnstructuredGrid, ascii or raw appended data
+//   .mesh  Medit ASCII
+//   .msh   Gmsh 2.2 ASCII/binary and 4.1 ASCII
+//   .node/.ele  TetGen
+// Cells of dimension < 3 (vertices, lines, triangles, quads) are skipped; 3D cells other than
+// linear tetrahedra are rejected (IoError non_tet_cell).
+#include <string>
+#include <string_view>
+
+#include "io/tet_mesh_data.hpp"
+
+namespace cmx::io {
+
+TetMeshData read_ovm(std::string_view bytes, const std::string& name, const ReadOptions& options = {});
+TetMeshData read_vtk(std::string_view bytes, const std::string& name, const ReadOptions& options = {});
+TetMeshData read_vtu(std::string_view bytes, const std::string& name, const ReadOptions& options = {});
+TetMeshData read_medit(std::string_view bytes, const std::string& name, const ReadOptions& options = {});
+TetMeshData read_gmsh(std::string_view bytes, const std::string& name, const ReadOptions& options = {});
+// TetGen needs both files: the .node text and the .ele text.
+TetMeshData read_tetgen(std::string_view node_bytes, const std::string& node_name, std::string_view ele_bytes,
+                        const std::string& ele_name, const ReadOptions& options = {});
+
+// Reads `path`, choosing the reader by extension (case-insensitive): ovm, vtk, vtu, mesh, msh,
+// node or ele (TetGen: the sibling file with the other extension is read too). Throws IoError
+// (unsupported) for other extensions, (open_failed) when a file cannot be read.
+TetMeshData read_tet_mesh(const std::string& path, const ReadOptions& options = {});
+
+// True when read_tet_mesh knows the extension of `path`.
+bool is_readable_mesh_path(const std::string& path);
+
+}  // namespace cmx::io

@@ -1,0 +1,34 @@
+#pragma once
+// The exact map format .tmap (docs/formats.md):
+//   tmap 1
+//   vertices N
+//   sx sy sz tx ty tz      N lines: exact source then target coordinates (integer or p/q)
+//   tets M
+//   a b c d                M lines: 0-based; det[b-a, c-a, d-a] > 0 in source and target
+// The reader also accepts decimals and hexfloats (any syntax of parse_rational), blank lines and
+// '#' comments; the writer writes canonical integers or p/q only.
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "io/tet_mesh_data.hpp"
+
+namespace cmx::io {
+
+struct TetMap {
+  std::vector<Point3> source, target;  // same size
+  std::vector<Tet> tets;
+};
+
+// Reads and verifies a tmap: counts, indices, no repeated vertex within a tet, no duplicate tet,
+// and every tet positively oriented in the source AND the target (exact); a violation is an
+// IoError naming the line of the offending tet. With verify_orientation = false only the
+// combinatorial checks are made.
+TetMap parse_tmap(std::string_view bytes, const std::string& name, bool verify_orientation = true);
+TetMap read_tmap(const std::string& path, bool verify_orientation = true);
+
+// Writes atomically. Throws IoError (mismatch) when source and target sizes differ,
+// (index_out_of_range) for a bad tet index. Orientation is the caller's invariant (not checked).
+void write_tmap(const std::string& path, const TetMap& map);
+
+}  // namespace cmx::io
