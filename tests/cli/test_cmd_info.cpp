@@ -1,0 +1,63 @@
+// cmx info and cmx convert, run as a program.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+
+#include "run_cmx.hpp"
+
+using cmx::test::run_cmx;
+using cmx::test::write_temp_file;
+
+static const char* unit_tet_vtk =
+    "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n"
+    "CELLS 2 10\n4 0 1 2 3\n4 1 3 2 4\nCELL_TYPES 2\n10\n10\n";
+
+TEST_CASE("cmx info --json: counts and ball verdict") {
+  const auto path = write_temp_file(unit_tet_vtk, ".vtk");
+  const auto r = run_cmx({"info", path, "--json"});
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("\"vertices\": 5") != std::string::npos);
+  CHECK(r.out.find("\"tets\": 2") != std::string::npos);
+  CHECK(r.out.find("\"boundary_vertices\": 5") != std::string::npos);
+  CHECK(r.out.find("\"reason\": ") != std::string::npos);
+  // (0,1,2,3) is positive and (1,3,2,4) negative: read fine, but not a consistently oriented ball.
+  CHECK(r.out.find("\"is_ball\": false") != std::string::npos);
+  CHECK(r.out.find("inconsistent orientation") != std::string::npos);
+}
+
+TEST_CASE("cmx info on a ball, text output") {
+  const auto path = write_temp_file(
+      "MeshVersionFormatted 1\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n1 1 1 0\n"
+      "Tetrahedra\n2\n1 2 3 4 0\n2 3 4 5 0\nEnd\n",
+      ".mesh");
+  const auto r = run_cmx({"info", path});
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("ball: yes") != std::string::npos);
+  CHECK(r.out.find("Euler characteristic 1 (boundary 2)") != std::string::npos);
+}
+
+TEST_CASE("cmx info: read errors exit 3 with file:line") {
+  const auto path = write_temp_file("# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 double\n0 0 0\n1 x 0\n", ".vtk");
+  const auto r = run_cmx({"info", path});
+  CHECK(r.exit_code == 3);
+  CHECK(r.err.find(path + ":7: ") == 0);
+  CHECK(run_cmx({"info"}).exit_code == 2);
+  CHECK(run_cmx({"info", "/nonexistent.vtk"}).exit_code == 3);
+}
+
+TEST_CASE("cmx convert: by extension, normalising orientation") {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto in = write_temp_file(
+      "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\nTetrahedra\n1\n1 3 2 4 0\nEnd\n", ".mesh");
+  const auto out = in + ".ovm";
+  const auto r = run_cmx({"convert", in, out});
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  const auto info = run_cmx({"info", out, "--json"});
+  CHECK(info.out.find("\"is_ball\": true") != std::string::npos);
+  CHECK(info.out.find("\"positive\": 1") != std::string::npos);
+  CHECK(run_cmx({"convert", in, in + ".obj"}).exit_code == 2);
+  CHECK(run_cmx({"convert", in + ".missing.vtk", out}).exit_code == 3);
+}
