@@ -1,0 +1,214 @@
+// cmx topo-expand, run as a program: complete on grids, stuck on Furch's knotted hole in every
+// order (exit 0: stuck is a result), the JSON report's keys and their consistency, exit codes.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cstdlib>
+#include <string>
+
+#include "run_cmx.hpp"
+
+using cmx::test::run_cmx;
+using cmx::test::write_temp_file;
+
+namespace {
+
+// Where the value of "key" starts in a JSON report ("\"key\": " precedes it), or npos. Keys are
+// unique in the report ("1", "2", "3" occur only inside "k_manifold").
+std::size_t value_position(const std::string& json, const char* key) {
+  std::string tag = "\"";  // built piecewise: g++ 12 -Wrestrict misfires on "\"" + std::string
+  tag += key;
+  tag += "\": ";
+  const auto at = json.find(tag);
+  return at == std::string::npos ? at : at + tag.size();
+}
+
+// The integer value of "key"; -1 when the key is absent.
+long json_integer(const std::string& json, const char* key) {
+  const std::size_t at = value_position(json, key);
+  return at == std::string::npos ? -1 : std::strtol(json.c_str() + at, nullptr, 10);
+}
+
+bool json_has(const std::string& json, const std::string& text) { return json.find(text) != std::string::npos; }
+
+// A Medit file of an n x n x n Kuhn grid: vertex (i,j,k) at the integer point, 6 tets per cell
+// along the paths corner -> +e_a -> +e_b -> +e_c, each listed positively (odd paths reversed).
+std::string grid_medit(int n) {
+  const auto id = [n](int i, int j, int k) { return 1 + i + (n + 1) * (j + (n + 1) * k); };  // 1-based
+  std::string vertices, tets;
+  int num_tets = 0;
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) vertices += std::to_string(i) + ' ' + std::to_string(j) + ' ' + std::to_string(k) + " 0\n";
+  const std::array<std::array<int, 3>, 6> paths = {{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        for (std::size_t p = 0; p < paths.size(); ++p) {
+          std::array<int, 3> at = {i, j, k};
+          std::array<int, 4> tet{};
+          tet[0] = id(at[0], at[1], at[2]);
+          for (std::size_t s = 0; s < 3; ++s) {
+            ++at[std::size_t(paths[p][s])];
+            tet[s + 1] = id(at[0], at[1], at[2]);
+          }
+          if (p >= 3) std::swap(tet[2], tet[3]);  // the last three paths are odd permutations
+          tets += std::to_string(tet[0]) + ' ' + std::to_string(tet[1]) + ' ' + std::to_string(tet[2]) + ' ' +
+                  std::to_string(tet[3]) + " 0\n";
+          ++num_tets;
+        }
+  return "MeshVersionFormatted 1\nDimension 3\nVertices\n" + std::to_string((n + 1) * (n + 1) * (n + 1)) + "\n" + vertices +
+         "Tetrahedra\n" + std::to_string(num_tets) + "\n" + tets + "End\n";
+}
+
+// `cmx topo-expand --builtin NAME --order ORDER --json`, which must exit 0; returns stdout.
+std::string expand_json(const char* builtin, const char* order) {
+  const auto r = run_cmx({"topo-expand", "--builtin", builtin, "--order", order, "--json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  return r.out;
+}
+
+// Every count of the report adds up: the sequence is the sum of its kinds, and what was not
+// expanded remains.
+void check_consistent(const std::string& json) {
+  const long length = json_integer(json, "sequence_length");
+  CHECK(length == json_integer(json, "1") + json_integer(json, "2") + json_integer(json, "3") + json_integer(json, "other") +
+                      json_integer(json, "automatic"));
+  CHECK(length + json_integer(json, "remaining_vertices") == json_integer(json, "initial_cluster_vertices"));
+  CHECK(json_has(json, "\"seconds\": "));
+}
+
+}  // namespace
+
+TEST_CASE("cmx topo-expand completes on a grid file and on the builtin grid") {
+  const auto path = write_temp_file(grid_medit(3), ".mesh");
+  const auto text = run_cmx({"topo-expand", path});
+  INFO(text.err);
+  REQUIRE(text.exit_code == 0);
+  CHECK(json_has(text.out, "(64 vertices, 162 tets; a ball)"));
+  CHECK(json_has(text.out, "order: priority\n"));
+  CHECK(json_has(text.out, "initial cluster vertices: 8\n"));
+  CHECK(json_has(text.out, "sequence length: 8\n"));
+  CHECK(json_has(text.out, "stuck: no"));
+  CHECK(json_has(text.out, "time: "));
+
+  for (const char* order : {"priority", "index", "random:7"}) {
+    CAPTURE(order);
+    const std::string json = expand_json("grid:6,5,4", order);
+    CHECK(json_has(json, "\"stuck\": false"));
+    CHECK(json_integer(json, "initial_cluster_vertices") == 5 * 4 * 3);
+    CHECK(json_integer(json, "sequence_length") == 5 * 4 * 3);
+    CHECK(json_integer(json, "remaining_vertices") == 0);
+    CHECK(json_integer(json, "automatic") >= 1);  // at least the last vertex
+    CHECK(json_has(json, "\"order\": \"" + std::string(order) + "\""));
+    check_consistent(json);
+  }
+}
+
+TEST_CASE("cmx topo-expand --json: one object with every documented key") {
+  const auto r = run_cmx({"topo-expand", "--builtin=grid:2,2,2", "--order=index", "--json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.front() == '{');
+  CHECK(r.out.substr(r.out.size() - 2) == "}\n");
+  for (const char* key : {"source", "vertices", "tets", "order", "initial_cluster_vertices", "sequence_length", "k_manifold", "1", "2",
+                          "3", "other", "automatic", "stuck", "remaining_vertices", "remaining_euler", "remaining_components", "seconds"})
+    CHECK_MESSAGE(value_position(r.out, key) != std::string::npos, key);
+  CHECK(json_has(r.out, "\"source\": \"builtin:grid:2,2,2\""));
+  CHECK(json_integer(r.out, "vertices") == 27);
+  CHECK(json_integer(r.out, "tets") == 48);
+  CHECK(json_integer(r.out, "initial_cluster_vertices") == 1);
+  CHECK(json_integer(r.out, "automatic") == 1);  // a lone cluster vertex is expanded automatically
+  CHECK(json_integer(r.out, "remaining_euler") == 0);  // the empty cluster mesh
+  CHECK(json_integer(r.out, "remaining_components") == 0);
+}
+
+TEST_CASE("cmx topo-expand reports stuck on the knotted hole in every order (exit 0) and completes on the control") {
+  for (const char* order : {"priority", "index", "random:1"}) {
+    CAPTURE(order);
+    const std::string json = expand_json("knotted-hole", order);
+    CHECK(json_has(json, "\"stuck\": true"));
+    CHECK(json_integer(json, "tets") == 59286);
+    CHECK(json_integer(json, "initial_cluster_vertices") == 7944);
+    CHECK(json_integer(json, "sequence_length") > 0);
+    CHECK(json_integer(json, "remaining_vertices") >= 2);
+    // Corollary 1: Eq. (1) expansions keep the cluster mesh simply connected.
+    CHECK(json_integer(json, "remaining_euler") == 1);
+    CHECK(json_integer(json, "remaining_components") == 1);
+    check_consistent(json);
+  }
+  const auto text = run_cmx({"topo-expand", "--builtin", "knotted-hole"});
+  CHECK(text.exit_code == 0);
+  CHECK(json_has(text.out, "stuck: yes: "));
+  CHECK(json_has(text.out, "(Euler characteristic 1, b0 1), none satisfies Eq. (1)"));
+  for (const char* order : {"priority", "index", "random:1"}) {
+    CAPTURE(order);
+    const std::string json = expand_json("unknotted-hole", order);
+    CHECK(json_has(json, "\"stuck\": false"));
+    CHECK(json_integer(json, "sequence_length") == json_integer(json, "initial_cluster_vertices"));
+    check_consistent(json);
+  }
+  // Bing's house: stuck before the first expansion.
+  const auto bing = run_cmx({"topo-expand", "--builtin", "bings-house", "--json"});
+  CHECK(bing.exit_code == 0);
+  CHECK(json_has(bing.out, "\"stuck\": true"));
+  CHECK(json_integer(bing.out, "sequence_length") == 0);
+}
+
+TEST_CASE("cmx topo-expand: usage errors exit 2") {
+  const auto bad_order = run_cmx({"topo-expand", "--builtin", "grid:2,2,2", "--order", "shelling"});
+  CHECK(bad_order.exit_code == 2);
+  CHECK(json_has(bad_order.err, "unknown order 'shelling'"));
+  CHECK(bad_order.out.empty());
+  CHECK(run_cmx({"topo-expand", "--builtin", "grid:2,2,2", "--order", "random:"}).exit_code == 2);
+  CHECK(run_cmx({"topo-expand", "--builtin", "grid:2,2,2", "--order"}).exit_code == 2);
+  CHECK(run_cmx({"topo-expand"}).exit_code == 2);
+  CHECK(run_cmx({"topo-expand", "a.vtk", "b.vtk"}).exit_code == 2);
+  CHECK(run_cmx({"topo-expand", "a.vtk", "--builtin", "knotted-hole"}).exit_code == 2);
+  CHECK(run_cmx({"topo-expand", "--frobnicate"}).exit_code == 2);
+  const auto unknown = run_cmx({"topo-expand", "--builtin", "trefoil"});
+  CHECK(unknown.exit_code == 2);
+  CHECK(json_has(unknown.err, "unknown builtin 'trefoil'"));
+  for (const char* grid : {"grid:0,1,1", "grid:1,1", "grid:1,1,1,", "grid:a,1,1", "grid:100000,100000,100000"}) {
+    CAPTURE(grid);
+    const auto r = run_cmx({"topo-expand", "--builtin", grid});
+    CHECK(r.exit_code == 2);
+    CHECK(json_has(r.err, "bad grid size"));
+  }
+  const auto help = run_cmx({"topo-expand", "--help"});
+  CHECK(help.exit_code == 0);
+  CHECK(json_has(help.out, "stuck is a result, not an error"));
+  CHECK(json_has(run_cmx({"--help"}).out, "topo-expand"));
+}
+
+TEST_CASE("cmx topo-expand: unreadable input exits 3 with file:line and a non-ball exits 4 with the reason") {
+  const auto missing = run_cmx({"topo-expand", "/nonexistent/domain.ovm"});
+  CHECK(missing.exit_code == 3);
+  CHECK(json_has(missing.err, "/nonexistent/domain.ovm: "));
+  const auto malformed =
+      write_temp_file("# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 double\n0 0 0\n1 x 0\n", ".vtk");
+  const auto bad = run_cmx({"topo-expand", malformed});
+  CHECK(bad.exit_code == 3);
+  CHECK(bad.err.find(malformed + ":7: ") == 0);
+  CHECK(bad.out.empty());
+  CHECK(run_cmx({"topo-expand", write_temp_file("", ".obj")}).exit_code == 3);  // unknown format
+
+  // Two tets sharing only vertex 0: read fine, but not a manifold.
+  const auto pinched = write_temp_file(
+      "MeshVersionFormatted 1\nDimension 3\nVertices\n7\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n-1 0 0 0\n0 -1 0 0\n0 0 -1 0\n"
+      "Tetrahedra\n2\n1 2 3 4 0\n1 5 7 6 0\nEnd\n",
+      ".mesh");
+  const auto r = run_cmx({"topo-expand", pinched, "--json"});
+  CHECK(r.exit_code == 4);
+  CHECK(json_has(r.err, "is not a ball: vertex 0"));
+  CHECK(r.out.empty());
+  // Tets listed with inconsistent orientation across their common face: not a ball (combinatorial check).
+  const auto twisted = write_temp_file(
+      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n"
+      "CELLS 2 10\n4 0 1 2 3\n4 1 3 2 4\nCELL_TYPES 2\n10\n10\n",
+      ".vtk");
+  const auto t = run_cmx({"topo-expand", twisted});
+  CHECK(t.exit_code == 4);
+  CHECK(json_has(t.err, "must be opposite"));
+}
