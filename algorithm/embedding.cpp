@@ -1,0 +1,52 @@
+#include "algorithm/embedding.hpp"
+
+#include <string>
+
+#include "algorithm/map_error.hpp"
+#include "kernel/orient.hpp"
+#include "topology/mesh_edits.hpp"
+
+namespace cmx::algorithm {
+
+VertexId Embedding::append_vertex(const HPoint& src, const HPoint& at, bool in_cluster) {
+  source.push_back(src);
+  target.push_back(at);
+  unexpanded.push_back(in_cluster ? 1 : 0);
+  boundary.push_back(0);
+  return VertexId(source.size() - 1);
+}
+
+VertexId Embedding::split_edge(VertexId a, VertexId b, const HPoint& at, bool in_cluster) {
+  const HPoint src = midpoint(source[a], source[b]);
+  const topology::SplitResult r = topology::split_edge(mesh, a, b);
+  if (!r.ok) throw MapError(MapErrorKind::internal, "edge split refused: " + r.message);
+  const VertexId v = append_vertex(src, at, in_cluster);
+  if (v != r.new_vertex) throw MapError(MapErrorKind::internal, "edge split: vertex numbering out of step");
+  return v;
+}
+
+VertexId Embedding::split_face(VertexId a, VertexId b, VertexId c, const HPoint& at, bool in_cluster) {
+  const HPoint pts[3] = {source[a], source[b], source[c]};
+  const Rational third(1, 3);
+  const Rational w[3] = {third, third, third};
+  const HPoint src = convex_combination(pts, w, 3);
+  const topology::SplitResult r = topology::split_face(mesh, a, b, c);
+  if (!r.ok) throw MapError(MapErrorKind::internal, "face split refused: " + r.message);
+  const VertexId v = append_vertex(src, at, in_cluster);
+  if (v != r.new_vertex) throw MapError(MapErrorKind::internal, "face split: vertex numbering out of step");
+  return v;
+}
+
+Sign Embedding::orient_target(const topology::Tet& t) const {
+  return orient3d(target[t[0]], target[t[1]], target[t[2]], target[t[3]], filter, stats);
+}
+
+Sign Embedding::orient_source(const topology::Tet& t) const {
+  return orient3d(source[t[0]], source[t[1]], source[t[2]], source[t[3]], filter, stats);
+}
+
+int Embedding::unexpanded_count(const topology::Tet& t) const {
+  return (unexpanded[t[0]] != 0) + (unexpanded[t[1]] != 0) + (unexpanded[t[2]] != 0) + (unexpanded[t[3]] != 0);
+}
+
+}  // namespace cmx::algorithm

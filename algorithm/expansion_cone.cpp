@@ -1,0 +1,40 @@
+#include "algorithm/expansion_cone.hpp"
+
+#include "topology/tet_mesh.hpp"
+
+namespace cmx::algorithm {
+
+ExpansionCone gather_expansion_cone(const Embedding& e, VertexId v) {
+  ExpansionCone cone;
+  cone.apex = v;
+  for (TetId t : e.mesh.tets_of(v)) {
+    const topology::Tet& tet = e.mesh.tet(t);
+    const int others = e.unexpanded_count(tet) - 1;
+    if (others >= 2) continue;
+    const int i = topology::local_index(tet, v);
+    const topology::Triangle f = topology::tet_face(tet, i);
+    // Cluster vertices other than v sit at p_c: e.target holds exactly that position.
+    InnerHalfSpace h = inner_halfspace(e.target[f[0]], e.target[f[1]], e.target[f[2]]);
+    if (h.is_degenerate()) cone.degenerate = true;
+    (others == 0 ? cone.base_tets : cone.side_tets) += 1;
+    cone.halfspaces.push_back(std::move(h));
+  }
+  return cone;
+}
+
+std::vector<lp::HalfSpace> lp_halfspaces(const ExpansionCone& cone) {
+  std::vector<lp::HalfSpace> out;
+  out.reserve(cone.halfspaces.size());
+  for (const InnerHalfSpace& h : cone.halfspaces)
+    out.push_back({Rational(h.u[0]), Rational(h.u[1]), Rational(h.u[2]), Rational(h.w)});
+  return out;
+}
+
+bool strictly_inside(const ExpansionCone& cone, const HPoint& x) {
+  if (cone.degenerate) return false;
+  for (const InnerHalfSpace& h : cone.halfspaces)
+    if (side_of(h, x) != Sign::negative) return false;
+  return true;
+}
+
+}  // namespace cmx::algorithm

@@ -1,0 +1,124 @@
+#include "algorithm/map.hpp"
+
+#include <chrono>
+
+#include "algorithm/cluster_expansion.hpp"
+#include "algorithm/embedding.hpp"
+#include "algorithm/invariants.hpp"
+#include "algorithm/preprocess.hpp"
+#include "algorithm/validate_problem.hpp"
+#include "topology/cluster_links.hpp"
+
+namespace cmx::algorithm {
+
+const char* to_string(MapOutcome o) {
+  switch (o) {
+    case MapOutcome::success: return "success";
+    case MapOutcome::time_limit: return "time_limit";
+    case MapOutcome::stuck: return "stuck";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+Embedding initial_embedding(const ValidatedProblem& v, const MapOptions& options, FilterStats* stats) {
+  Embedding e;
+  e.mesh = v.mesh;
+  e.source = v.source;
+  e.boundary = v.boundary;
+  e.filter = options.filter;
+  e.stats = stats;
+  const std::size_t n = v.source.size();
+  e.target.resize(n);
+  e.unexpanded.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (v.boundary[i]) e.target[i] = v.prescribed[i];
+    else e.unexpanded[i] = 1;  // every vertex is in a tet (ball check), so non-boundary = interior
+  }
+  return e;
+}
+
+void output_statistics(const Embedding& e, MapResult& r) {
+  MapStatistics& s = r.stats;
+  s.output_vertices = e.num_vertices();
+  s.output_tets = e.mesh.num_tets();
+  s.growth_ratio = double(s.output_vertices) / double(s.input_vertices);
+  double total = 0;
+  for (const HPoint& p : e.target) {
+    s.max_bits = std::max(s.max_bits, p.bit_size());
+    total += double(p.bit_size());
+  }
+  s.mean_bits = e.target.empty() ? 0 : total / double(e.target.size());
+}
+
+}  // namespace
+
+MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
+  const auto start = Clock::now();
+  MapResult r;
+  MapStatistics& s = r.stats;
+  const ValidatedProblem v = validate_problem(problem, options.filter, options.placement.lp);
+  s.input_vertices = problem.source.size();
+  s.input_tets = problem.tets.size();
+  s.input_boundary_vertices = problem.boundary_vertices.size();
+  s.input_interior_vertices = s.input_vertices - s.input_boundary_vertices;
+  s.seconds_validate = seconds_since(start);
+
+  auto phase = Clock::now();
+  Embedding e = initial_embedding(v, options, &s.filter);
+  const PreprocessResult pre = preprocess_and_shrink(e, v, options.placement);
+  s.split_topology = pre.split_topology;
+  s.split_fallback = pre.split_fallback;
+  s.split_all_boundary_tet = pre.split_all_boundary_tet;
+  s.split_no_shrink_point = pre.split_no_shrink_point;
+  s.lps += pre.lps;
+  s.vertices_after_preprocess = e.num_vertices();
+  s.tets_after_preprocess = e.mesh.num_tets();
+  std::vector<HPoint> prescribed = v.prescribed;
+  prescribed.resize(e.num_vertices());
+  if (std::string why = check_invariants(e, prescribed); !why.empty())
+    throw MapError(MapErrorKind::internal, "the shrunk state breaks an invariant: " + why);
+  s.degenerate_after_shrink = topology::count_degenerate_tets(e.mesh, e.unexpanded);
+  r.center = e.center;
+  s.seconds_preprocess = seconds_since(phase);
+
+  phase = Clock::now();
+  ExpansionSettings settings;
+  settings.placement = options.placement;
+  settings.order = options.order;
+  settings.check = options.check;
+  settings.start = start;
+  if (options.time_limit_seconds > 0)
+    settings.deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
+  settings.progress = options.progress;
+  settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior
+  settings.input_vertices = s.input_vertices;
+  settings.vertex_budget = std::max<std::size_t>(200000, 50 * s.input_vertices);
+  const ExpansionOutcome out = expand_cluster(e, settings, s);
+  s.seconds_expand = seconds_since(phase);
+  r.outcome = out.outcome;
+  r.message = out.message;
+
+  r.tets.reserve(e.mesh.num_tets());
+  for (TetId t : e.mesh.live_tets()) r.tets.push_back(e.mesh.tet(t));
+  r.source = e.source;
+  r.target = e.target;
+  output_statistics(e, r);
+  if (r.outcome == MapOutcome::success) {
+    phase = Clock::now();
+    VerificationInput in{&problem.tets, &v.source, &problem.boundary_vertices, &v.boundary_positions};
+    r.verification = verify_map(in, r.tets, r.source, r.target);
+    s.seconds_verify = seconds_since(phase);
+    if (!r.verification.ok())
+      throw MapError(MapErrorKind::internal, "the computed map failed verification: " + r.verification.first_failure);
+  }
+  s.seconds_total = seconds_since(start);
+  return r;
+}
+
+}  // namespace cmx::algorithm

@@ -1,0 +1,93 @@
+#pragma once
+// The mapping method end to end (paper Alg. 1; ARCHITECTURE.md section 1):
+//   validate -> preprocess (parsimonious splits, shrink point p_c) -> shrink -> expand the cluster
+//   mesh vertex by vertex -> verify exactly, on an independent code path.
+// The CLI (`cmx map`) is a thin shell over map_to_domain.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "algorithm/map_error.hpp"
+#include "algorithm/placement.hpp"
+#include "algorithm/verify_map.hpp"
+#include "arith/rational.hpp"
+#include "kernel/filter_policy.hpp"
+#include "kernel/homogeneous_point.hpp"
+#include "topology/tet_mesh.hpp"
+#include "topology/topological_expansion.hpp"
+
+namespace cmx::algorithm {
+
+using Point3 = std::array<Rational, 3>;
+
+// A mapping problem: a ball-topology tet mesh with exact source positions (every tet positively
+// oriented) and exact prescribed positions for exactly its boundary vertices.
+struct MapProblem {
+  std::vector<topology::Tet> tets;
+  std::vector<Point3> source;                 // one per vertex
+  std::vector<std::uint32_t> boundary_vertices;
+  std::vector<Point3> boundary_positions;     // boundary_positions[i] for boundary_vertices[i]
+};
+
+struct MapProgress {
+  std::size_t expanded = 0, remaining = 0;    // cluster vertices expanded so far / still left
+  std::size_t splits = 0;                     // vertices added so far (preprocessing included)
+  std::size_t max_bits = 0;                   // largest coordinate bit size so far
+  double seconds = 0;
+};
+
+struct MapOptions {
+  FilterPolicy filter;                        // predicate arithmetic
+  PlacementOptions placement;                 // LP backend, norm, precision reduction
+  topology::ExpansionOrder order;             // priority (default), index, random:SEED
+  double time_limit_seconds = 0;              // 0 = none
+  bool check = false;                         // assert every invariant after every step (slow)
+  std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
+};
+
+struct MapStatistics {
+  std::size_t input_vertices = 0, input_tets = 0, input_boundary_vertices = 0, input_interior_vertices = 0;
+  // Preprocessing splits, by reason (algorithm/preprocess.hpp).
+  std::size_t split_topology = 0;             // chord faces/edges: the cluster mesh must be simply connected
+  std::size_t split_all_boundary_tet = 0;     // all-boundary tet not positive
+  std::size_t split_no_shrink_point = 0;      // one-interior-vertex tet no shrink point could make positive
+  std::size_t split_fallback = 0;             // the predecessor's split-every-chord fallback
+  std::size_t vertices_after_preprocess = 0, tets_after_preprocess = 0;
+  std::size_t degenerate_after_shrink = 0;
+  // Expansion.
+  std::size_t expansions_simple = 0, expansions_star_shapified = 0, expansions_inflated = 0,
+              expansions_automatic = 0;
+  std::size_t k_manifold[4] = {0, 0, 0, 0};   // expansions of k-manifold-expandable vertices (k=1..3; [0]: other)
+  std::size_t pushes = 0;                     // vertices pushed into the cluster (star-shapification)
+  std::size_t inflation_splits = 0;
+  std::size_t lps = 0, lps_certified = 0, lps_fell_back = 0;
+  // Output.
+  std::size_t output_vertices = 0, output_tets = 0;
+  double growth_ratio = 0;                    // output / input vertices (preprocessing included)
+  std::size_t max_bits = 0;                   // largest homogeneous coordinate of any target position
+  double mean_bits = 0;
+  // Times (seconds).
+  double seconds_validate = 0, seconds_preprocess = 0, seconds_expand = 0, seconds_verify = 0, seconds_total = 0;
+  FilterStats filter;
+};
+
+enum class MapOutcome { success, time_limit, stuck };
+const char* to_string(MapOutcome o);
+
+struct MapResult {
+  MapOutcome outcome = MapOutcome::stuck;
+  std::string message;                        // why it stopped, for time_limit and stuck
+  std::vector<topology::Tet> tets;            // output tets (input order, then new ones)
+  std::vector<HPoint> source, target;         // one per output vertex; the first input_vertices are the input's
+  HPoint center;                              // the shrink point p_c
+  MapStatistics stats;
+  MapVerification verification;               // filled on success
+};
+
+// Throws MapError for invalid problems (not a ball, boundary mismatch, degenerate or mirrored or
+// non-star-shaped boundary, ...); time limit and stuck come back as outcomes with statistics.
+MapResult map_to_domain(const MapProblem& problem, const MapOptions& options = {});
+
+}  // namespace cmx::algorithm

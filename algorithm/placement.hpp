@@ -1,0 +1,42 @@
+#pragma once
+// Choosing a new position inside an expansion cone: the Chebyshev centre of the cone's kernel
+// (lp/chebyshev_center.hpp), then the precision-reduction policy (ARCHITECTURE.md section 7,
+// paper Sec. 4.2.3) for a point with fewer bits that is still certified strictly inside.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "algorithm/expansion_cone.hpp"
+#include "lp/chebyshev_center.hpp"
+
+namespace cmx::algorithm {
+
+// none    : the exact Chebyshev centre;
+// dyadic  : the centre rounded to k-bit dyadics, k = 1, 2, 4, ... (lp::few_bits_by_dyadics);
+// shift   : Shrink-and-Expand's right-shift bisection (lp::few_bits_by_shift);
+// segment : dyadic points p_c + t (w - p_c), t = 1/2, 1/4, ..., toward a witness vertex w when
+//           the expansion has one (star-shapified cones), else as dyadic (paper Sec. 4.2.3).
+enum class PrecisionPolicy : std::uint8_t { none, dyadic, shift, segment };
+std::optional<PrecisionPolicy> parse_precision_policy(std::string_view name);
+std::string_view to_string(PrecisionPolicy p);
+
+struct PlacementOptions {
+  lp::ChebyshevOptions lp;
+  PrecisionPolicy precision = PrecisionPolicy::dyadic;
+};
+
+struct Placement {
+  lp::ChebyshevStatus status = lp::ChebyshevStatus::infeasible;
+  HPoint position;           // valid when status == interior
+  std::size_t centre_bits = 0, bits = 0;  // bits of the centre and of the position (max coordinate)
+  lp::SolveInfo info;
+  bool ok() const { return status == lp::ChebyshevStatus::interior; }
+};
+
+// Solves the cone's Chebyshev LP and reduces precision. `segment_from`/`segment_to` (optional)
+// give the segment of the segment policy (p_c and the witness).
+Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& options,
+                        const HPoint* segment_from = nullptr, const HPoint* segment_to = nullptr);
+
+}  // namespace cmx::algorithm

@@ -1,0 +1,222 @@
+#include "algorithm/verify_map.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "algorithm/describe.hpp"
+#include "kernel/orient.hpp"
+#include "kernel/orient_exact.hpp"
+#include "topology/ball_check.hpp"
+#include "topology/complex_queries.hpp"
+
+namespace cmx::algorithm {
+
+namespace {
+
+using R3 = std::array<Rational, 3>;
+
+R3 coords(const HPoint& p) { return {p.coordinate(0), p.coordinate(1), p.coordinate(2)}; }
+
+std::string tet_text(const topology::Tet& t) { return ids_text(t); }
+
+// A triangle in space with the coordinate plane it is projected to (the axis dropped is the one
+// of the largest normal component, so the projection is injective on its plane).
+struct PlaneTriangle {
+  HPoint a, b, c;
+  R3 ra, rb, rc;
+  int drop = 2;
+  int sign = 0;  // sign of its projected area
+};
+
+// Signed area (times 2) of (p, q, r) projected by dropping axis `drop`.
+Rational projected_area(const R3& p, const R3& q, const R3& r, int drop) {
+  const int i = drop == 0 ? 1 : 0, j = drop == 2 ? 1 : 2;
+  return (q[i] - p[i]) * (r[j] - p[j]) - (q[j] - p[j]) * (r[i] - p[i]);
+}
+
+PlaneTriangle make_triangle(const HPoint& a, const HPoint& b, const HPoint& c) {
+  PlaneTriangle t{a, b, c, coords(a), coords(b), coords(c)};
+  Rational best = 0;
+  for (int d = 0; d < 3; ++d) {
+    Rational s = projected_area(t.ra, t.rb, t.rc, d);
+    if (abs(s) > best) {
+      best = abs(s);
+      t.drop = d;
+      t.sign = sgn(s);
+    }
+  }
+  return t;
+}
+
+// x lies in the closed triangle (coplanar, and inside in the projection).
+bool contains(const PlaneTriangle& t, const HPoint& x, const R3& rx) {
+  if (t.sign == 0 || orient3d_exact(t.a, t.b, t.c, x) != Sign::zero) return false;
+  const int s1 = sgn(projected_area(t.ra, t.rb, rx, t.drop));
+  const int s2 = sgn(projected_area(t.rb, t.rc, rx, t.drop));
+  const int s3 = sgn(projected_area(t.rc, t.ra, rx, t.drop));
+  return s1 * t.sign >= 0 && s2 * t.sign >= 0 && s3 * t.sign >= 0;
+}
+
+struct Counts {
+  std::size_t negative = 0, zero = 0;
+  std::size_t first_bad = SIZE_MAX;
+  Sign first_sign = Sign::positive;
+};
+
+Counts orientation_counts(const std::vector<topology::Tet>& tets, const std::vector<HPoint>& pos) {
+  Counts c;
+  for (std::size_t i = 0; i < tets.size(); ++i) {
+    const auto& t = tets[i];
+    const Sign s = orient3d_exact(pos[t[0]], pos[t[1]], pos[t[2]], pos[t[3]]);
+    if (s == Sign::positive) continue;
+    (s == Sign::zero ? c.zero : c.negative) += 1;
+    if (c.first_bad == SIZE_MAX) {
+      c.first_bad = i;
+      c.first_sign = s;
+    }
+  }
+  return c;
+}
+
+// The boundary check of the header, in one space (target or source positions).
+class BoundaryTiling {
+ public:
+  BoundaryTiling(std::vector<PlaneTriangle> input, const std::vector<HPoint>& pos)
+      : input_(std::move(input)), pos_(pos), area_(input_.size()) {}
+
+  // Area of output face f (projected as its input triangle k), when f lies in triangle k with the
+  // same orientation; nullopt otherwise.
+  bool add(std::size_t k, const topology::Triangle& f) {
+    const PlaneTriangle& t = input_[k];
+    R3 r[3];
+    for (int i = 0; i < 3; ++i) {
+      r[i] = coords(pos_[f[i]]);
+      if (!contains(t, pos_[f[i]], r[i])) return false;
+    }
+    const Rational a = projected_area(r[0], r[1], r[2], t.drop);
+    if (sgn(a) != t.sign) return false;
+    area_[k] += a;
+    return true;
+  }
+  bool fits(std::size_t k, const topology::Triangle& f) const {
+    const PlaneTriangle& t = input_[k];
+    for (int i = 0; i < 3; ++i)
+      if (!contains(t, pos_[f[i]], coords(pos_[f[i]]))) return false;
+    return true;
+  }
+  // First input triangle whose pieces do not add up to its area, or SIZE_MAX.
+  std::size_t first_uncovered() const {
+    for (std::size_t k = 0; k < input_.size(); ++k)
+      if (area_[k] != projected_area(input_[k].ra, input_[k].rb, input_[k].rc, input_[k].drop)) return k;
+    return SIZE_MAX;
+  }
+
+ private:
+  std::vector<PlaneTriangle> input_;
+  const std::vector<HPoint>& pos_;
+  std::vector<Rational> area_;
+};
+
+std::string face_text(const topology::Triangle& f) { return ids_text(f); }
+
+// The boundary-refinement part of verify_map; returns "" or what failed.
+std::string check_boundary(const VerificationInput& in, const std::vector<topology::Tet>& tets,
+                           const std::vector<HPoint>& source, const std::vector<HPoint>& target,
+                           const std::vector<HPoint>& prescribed_by_vertex) {
+  const std::size_t n_in = in.source->size();
+  const topology::TetMesh input_mesh(n_in, *in.tets);
+  const auto input_faces = topology::boundary_faces(input_mesh);
+  std::vector<PlaneTriangle> tri_target, tri_source;
+  std::map<topology::VertexId, std::vector<std::size_t>> incident;
+  for (std::size_t k = 0; k < input_faces.size(); ++k) {
+    const auto& f = input_faces[k].face;
+    tri_target.push_back(make_triangle(prescribed_by_vertex[f[0]], prescribed_by_vertex[f[1]], prescribed_by_vertex[f[2]]));
+    tri_source.push_back(make_triangle((*in.source)[f[0]], (*in.source)[f[1]], (*in.source)[f[2]]));
+    for (auto v : f) incident[v].push_back(k);
+  }
+  BoundaryTiling in_target(std::move(tri_target), target), in_source(std::move(tri_source), source);
+  const topology::TetMesh output_mesh(target.size(), tets);
+  for (const auto& bf : topology::boundary_faces(output_mesh)) {
+    std::vector<std::size_t> candidates;
+    for (auto v : bf.face)
+      if (auto it = incident.find(v); it != incident.end()) candidates.insert(candidates.end(), it->second.begin(), it->second.end());
+    if (candidates.empty())
+      for (std::size_t k = 0; k < input_faces.size(); ++k) candidates.push_back(k);
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    bool placed = false;
+    for (std::size_t k : candidates) {
+      if (!in_target.fits(k, bf.face) || !in_source.fits(k, bf.face)) continue;
+      if (!in_target.add(k, bf.face) || !in_source.add(k, bf.face))
+        return "output boundary face " + face_text(bf.face) + " is reversed inside input boundary triangle " +
+               face_text(input_faces[k].face);
+      placed = true;
+      break;
+    }
+    if (!placed) return "output boundary face " + face_text(bf.face) + " lies in no input boundary triangle";
+  }
+  if (std::size_t k = in_target.first_uncovered(); k != SIZE_MAX)
+    return "prescribed boundary triangle " + face_text(input_faces[k].face) + " is not covered exactly";
+  if (std::size_t k = in_source.first_uncovered(); k != SIZE_MAX)
+    return "input boundary triangle " + face_text(input_faces[k].face) + " is not covered exactly in the source";
+  return {};
+}
+
+}  // namespace
+
+MapVerification verify_map(const VerificationInput& in, const std::vector<topology::Tet>& tets,
+                           const std::vector<HPoint>& source, const std::vector<HPoint>& target) {
+  MapVerification v;
+  auto fail = [&](const std::string& what) {
+    if (v.first_failure.empty()) v.first_failure = what;
+  };
+  const Counts t = orientation_counts(tets, target);
+  v.inverted = t.negative;
+  v.degenerate = t.zero;
+  v.target_positive = t.first_bad == SIZE_MAX;
+  if (!v.target_positive)
+    fail("tet " + tet_text(tets[t.first_bad]) + " is " + (t.first_sign == Sign::zero ? "degenerate" : "inverted") +
+         " in the target (" + std::to_string(t.negative) + " inverted, " + std::to_string(t.zero) + " degenerate)");
+  const Counts s = orientation_counts(tets, source);
+  v.source_positive = s.first_bad == SIZE_MAX;
+  if (!v.source_positive) fail("tet " + tet_text(tets[s.first_bad]) + " is not positive in the source");
+
+  const std::size_t n_in = in.source->size();
+  std::vector<HPoint> prescribed_by_vertex(n_in);
+  v.input_kept = source.size() >= n_in && target.size() == source.size();
+  for (std::size_t i = 0; v.input_kept && i < n_in; ++i)
+    if (!(source[i] == (*in.source)[i])) {
+      v.input_kept = false;
+      fail("input vertex " + std::to_string(i) + " moved in the source");
+    }
+  for (std::size_t i = 0; v.input_kept && i < in.boundary_vertices->size(); ++i) {
+    const auto b = (*in.boundary_vertices)[i];
+    prescribed_by_vertex[b] = (*in.boundary_positions)[i];
+    if (!(target[b] == (*in.boundary_positions)[i])) {
+      v.input_kept = false;
+      fail("boundary vertex " + std::to_string(b) + " is not at its prescribed position");
+    }
+  }
+  const topology::BallVerdict ball = topology::check_ball(topology::TetMesh(target.size(), tets));
+  v.ball = ball.ok;
+  if (!v.ball) fail("the output is not a ball: " + ball.message);
+  if (v.input_kept && v.ball) {
+    const std::string why = check_boundary(in, tets, source, target, prescribed_by_vertex);
+    v.boundary_refines = why.empty();
+    if (!why.empty()) fail(why);
+  }
+  return v;
+}
+
+DoubleCheck check_doubles(const std::vector<topology::Tet>& tets, const std::vector<std::array<double, 3>>& d) {
+  // The cascade on raw doubles is exact (adaptive expansions), and much cheaper than GMP.
+  DoubleCheck c;
+  for (const auto& t : tets) {
+    const Sign s = orient3d(d[t[0]].data(), d[t[1]].data(), d[t[2]].data(), d[t[3]].data());
+    if (s == Sign::negative) ++c.inverted;
+    if (s == Sign::zero) ++c.degenerate;
+  }
+  return c;
+}
+
+}  // namespace cmx::algorithm

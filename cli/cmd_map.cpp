@@ -1,0 +1,365 @@
+// cmx map: the product. A ball-topology tet mesh and prescribed star-shaped boundary positions in,
+// a refined mesh whose image has no inverted or degenerate tet out, verified exactly.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "algorithm/map.hpp"
+#include "arith/rational.hpp"
+#include "arith/rounding.hpp"
+#include "cli/command.hpp"
+#include "cli/json.hpp"
+#include "cli/map_input.hpp"
+#include "io/atomic_file.hpp"
+#include "io/io_error.hpp"
+#include "io/tmap.hpp"
+#include "io/write_mesh.hpp"
+#include "kernel/filter_policy.hpp"
+#include "lp/backend_registry.hpp"
+#ifdef CMX_HAVE_GLPK
+#include "lp/glpk/glpk_backend.hpp"
+#endif
+
+namespace cmx::cli {
+namespace {
+
+constexpr const char* usage =
+    "usage: cmx map DOMAIN (--boundary B.txt | --codomain MESH | --shape SHAPE) [-o OUT]\n"
+    "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--time-limit S] [--check]\n"
+    "               [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
+    "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
+    "               [--quiet]\n"
+    "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
+    "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
+    "the verdict.\n"
+    "  --boundary B.txt  lines 'index x y z' (exact numbers) for exactly the boundary vertices\n"
+    "  --codomain MESH   a mesh with DOMAIN's connectivity whose boundary vertices give the positions\n"
+    "  --shape SHAPE     generated boundary: tet, stiff-tet, sphere, star[:SEED]\n"
+    "  -o OUT            output path; OUT's extension (if one of the formats) selects that format,\n"
+    "                    otherwise OUT is a stem. The exact map OUT.tmap is always written.\n"
+    "  --format LIST     more formats, comma-separated: tmap, vtu, ovm, vtk, mesh (display formats\n"
+    "                    carry the nearest doubles; the report says whether they are valid)\n"
+    "  --report R.json   statistics and verdicts as JSON\n"
+    "  --time-limit S    stop after S seconds (exit 6)\n"
+    "  --check           assert every invariant after every step (slow; for testing)\n"
+    "  --order ORDER     expansion order (default priority: paper Sec. 4.1.2)\n"
+    "  --seed N          seed of random orders and of generated shapes (default 1234)\n"
+    "  --precision P     precision reduction of new positions (default dyadic)\n"
+    "  --filter F        predicate arithmetic (default cascade; all but naive are exact)\n"
+    "  --lp NAME         LP backend (default certified)\n"
+    "  --norm NAME       Chebyshev row weights (default l2-upper)\n"
+    "  --quiet           no progress line, no verdict on stdout\n"
+    "Exit codes: 0 mapped and verified; 2 bad command line; 3 unreadable or malformed input;\n"
+    "4 not a valid problem (not a ball, boundary mismatch, degenerate or mirrored boundary);\n"
+    "5 boundary not star-shaped; 6 time limit; 7 stuck; 10 internal error (please report).\n"
+    "On any failure no output file is written (an existing one is left untouched).\n";
+
+struct Args {
+  std::string domain, boundary, codomain, shape, out, report;
+  std::vector<std::string> formats;
+  double time_limit = 0;
+  bool check = false, quiet = false;
+  std::uint64_t seed = 1234;
+  algorithm::MapOptions options;
+};
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+bool known_format(const std::string& f) { return f == "tmap" || f == "vtu" || f == "ovm" || f == "vtk" || f == "mesh"; }
+
+// Returns "" or the usage error.
+std::string parse_args(const std::vector<std::string>& args, Args& a) {
+  std::string order_text;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& x = args[i];
+    auto value = [&](std::string& into) {
+      if (i + 1 >= args.size()) return false;
+      into = args[++i];
+      return true;
+    };
+    std::string v;
+    if (x == "--boundary") {
+      if (!value(a.boundary)) return "--boundary needs a file";
+    } else if (x == "--codomain") {
+      if (!value(a.codomain)) return "--codomain needs a mesh";
+    } else if (x == "--shape") {
+      if (!value(a.shape)) return "--shape needs a name";
+    } else if (x == "-o" || x == "--output") {
+      if (!value(a.out)) return "-o needs a path";
+    } else if (x == "--report") {
+      if (!value(a.report)) return "--report needs a path";
+    } else if (x == "--format") {
+      if (!value(v)) return "--format needs a list";
+      for (const auto& f : split_list(v)) {
+        if (!known_format(f)) return "unknown format '" + f + "' (tmap, vtu, ovm, vtk, mesh)";
+        a.formats.push_back(f);
+      }
+    } else if (x == "--time-limit") {
+      if (!value(v)) return "--time-limit needs seconds";
+      char* end = nullptr;
+      a.time_limit = std::strtod(v.c_str(), &end);
+      if (end == v.c_str() || *end || !(a.time_limit > 0)) return "--time-limit needs a positive number of seconds";
+    } else if (x == "--seed") {
+      if (!value(v)) return "--seed needs a number";
+      char* end = nullptr;
+      a.seed = std::strtoull(v.c_str(), &end, 10);
+      if (end == v.c_str() || *end) return "--seed needs a non-negative integer";
+    } else if (x == "--order") {
+      if (!value(order_text)) return "--order needs a name";
+      const auto o = topology::parse_expansion_order(order_text);
+      if (!o) return "unknown order '" + order_text + "' (priority, index, random:SEED)";
+      a.options.order = *o;
+    } else if (x == "--precision") {
+      if (!value(v)) return "--precision needs a name";
+      const auto p = algorithm::parse_precision_policy(v);
+      if (!p) return "unknown precision policy '" + v + "' (dyadic, shift, segment, none)";
+      a.options.placement.precision = *p;
+    } else if (x == "--filter") {
+      if (!value(v)) return "--filter needs a name";
+      std::string why;
+      const auto f = parse_filter_policy(v, &why);
+      if (!f) return why;
+      if (f->kind == FilterPolicy::Kind::naive) return "--filter naive gives wrong signs; cmx map needs an exact policy";
+      a.options.filter = *f;
+    } else if (x == "--lp") {
+      if (!value(v)) return "--lp needs a name";
+      if (!lp::find_backend(v)) return "unknown or unavailable LP backend '" + v + "'";
+      a.options.placement.lp.backend = v;
+    } else if (x == "--norm") {
+      if (!value(v)) return "--norm needs a name";
+      const auto n = lp::parse_norm(v);
+      if (!n) return "unknown norm '" + v + "' (l2-upper, l1)";
+      a.options.placement.lp.norm = *n;
+    } else if (x == "--check") {
+      a.check = true;
+    } else if (x == "--quiet" || x == "-q") {
+      a.quiet = true;
+    } else if (!x.empty() && x[0] == '-') {
+      return "unknown option '" + x + "'";
+    } else if (a.domain.empty()) {
+      a.domain = x;
+    } else {
+      return "more than one DOMAIN given ('" + a.domain + "' and '" + x + "')";
+    }
+  }
+  if (a.domain.empty()) return "no DOMAIN mesh given";
+  const int sources = !a.boundary.empty() + !a.codomain.empty() + !a.shape.empty();
+  if (sources != 1) return "give exactly one of --boundary, --codomain, --shape";
+  a.options.check = a.check;
+  a.options.time_limit_seconds = a.time_limit;
+  return {};
+}
+
+// OUT's stem and the formats to write (tmap always).
+void output_plan(const Args& a, std::string& stem, std::vector<std::string>& formats) {
+  stem = a.out;
+  formats = a.formats;
+  const auto dot = a.out.find_last_of('.');
+  const auto slash = a.out.find_last_of('/');
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
+    const std::string ext = a.out.substr(dot + 1);
+    if (known_format(ext)) {
+      stem = a.out.substr(0, dot);
+      formats.push_back(ext);
+    }
+  }
+  formats.push_back("tmap");
+  std::sort(formats.begin(), formats.end());
+  formats.erase(std::unique(formats.begin(), formats.end()), formats.end());
+}
+
+int exit_code_of(algorithm::MapErrorKind kind) {
+  using K = algorithm::MapErrorKind;
+  switch (kind) {
+    case K::not_star_shaped: return exit_not_star_shaped;
+    case K::time_limit: return exit_time_limit;
+    case K::stuck: return exit_stuck;
+    case K::internal: return exit_internal;
+    default: return exit_invalid_problem;
+  }
+}
+
+std::vector<std::array<double, 3>> nearest(const std::vector<HPoint>& points) {
+  std::vector<std::array<double, 3>> out;
+  out.reserve(points.size());
+  for (const HPoint& p : points) out.push_back({to_double(p.coordinate(0)), to_double(p.coordinate(1)), to_double(p.coordinate(2))});
+  return out;
+}
+
+std::vector<io::Point3> exact(const std::vector<HPoint>& points) {
+  std::vector<io::Point3> out;
+  out.reserve(points.size());
+  for (const HPoint& p : points) out.push_back({p.coordinate(0), p.coordinate(1), p.coordinate(2)});
+  return out;
+}
+
+void write_outputs(const std::string& stem, const std::vector<std::string>& formats, const algorithm::MapResult& r,
+                   const std::vector<std::array<double, 3>>& doubles) {
+  for (const std::string& f : formats) {
+    const std::string path = stem + "." + f;
+    if (f == "tmap") {
+      io::TetMap m{exact(r.source), exact(r.target), r.tets};
+      io::write_tmap(path, m);
+    } else if (f == "ovm") {
+      const std::vector<io::Point3> ex = exact(r.target);
+      io::write_ovm(path, doubles, r.tets, &ex);
+    } else if (f == "vtu") {
+      io::write_vtu(path, doubles, r.tets);
+    } else if (f == "vtk") {
+      io::write_vtk(path, doubles, r.tets);
+    } else if (f == "mesh") {
+      io::write_medit(path, doubles, r.tets);
+    }
+  }
+}
+
+JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::string& status, const std::string& message,
+                       bool double_valid, std::size_t double_inverted, std::size_t double_degenerate) {
+  JsonObject j;
+  j.str("domain", a.domain);
+  j.str("status", status);
+  j.str("message", message);
+  JsonObject opt;
+  opt.str("order", topology::to_string(a.options.order));
+  opt.str("precision", std::string(algorithm::to_string(a.options.placement.precision)));
+  opt.str("filter", to_string(a.options.filter));
+  opt.str("lp", a.options.placement.lp.backend);
+  opt.str("norm", std::string(lp::to_string(a.options.placement.lp.norm)));
+  opt.num("time_limit", a.time_limit);
+  j.obj("options", opt);
+  if (!r) return j;
+  const algorithm::MapStatistics& s = r->stats;
+  JsonObject in, pre, ex, out, bits, times, verdict, filter;
+  in.num("vertices", std::uint64_t(s.input_vertices)).num("tets", std::uint64_t(s.input_tets));
+  in.num("boundary_vertices", std::uint64_t(s.input_boundary_vertices)).num("interior_vertices", std::uint64_t(s.input_interior_vertices));
+  pre.num("splits_topology", std::uint64_t(s.split_topology));
+  pre.num("splits_all_boundary_tet", std::uint64_t(s.split_all_boundary_tet));
+  pre.num("splits_no_shrink_point", std::uint64_t(s.split_no_shrink_point));
+  pre.num("splits_fallback", std::uint64_t(s.split_fallback));
+  pre.num("vertices", std::uint64_t(s.vertices_after_preprocess)).num("tets", std::uint64_t(s.tets_after_preprocess));
+  pre.num("degenerate_tets_after_shrink", std::uint64_t(s.degenerate_after_shrink));
+  pre.str("shrink_point", to_string(r->center.coordinate(0)) + " " + to_string(r->center.coordinate(1)) + " " +
+                              to_string(r->center.coordinate(2)));
+  ex.num("simple", std::uint64_t(s.expansions_simple)).num("star_shapified", std::uint64_t(s.expansions_star_shapified));
+  ex.num("inflated", std::uint64_t(s.expansions_inflated)).num("automatic", std::uint64_t(s.expansions_automatic));
+  JsonObject km;
+  km.num("1", std::uint64_t(s.k_manifold[1])).num("2", std::uint64_t(s.k_manifold[2])).num("3", std::uint64_t(s.k_manifold[3]));
+  km.num("other", std::uint64_t(s.k_manifold[0]));
+  ex.obj("k_manifold", km);
+  ex.num("pushes", std::uint64_t(s.pushes)).num("inflation_splits", std::uint64_t(s.inflation_splits));
+  ex.num("lps", std::uint64_t(s.lps)).num("lps_certified", std::uint64_t(s.lps_certified));
+  ex.num("lps_exact_fallback", std::uint64_t(s.lps_fell_back));
+  out.num("vertices", std::uint64_t(s.output_vertices)).num("tets", std::uint64_t(s.output_tets));
+  out.num("growth_ratio", s.growth_ratio);
+  bits.num("max", std::uint64_t(s.max_bits)).num("mean", s.mean_bits);
+  times.num("validate", s.seconds_validate).num("preprocess", s.seconds_preprocess).num("expand", s.seconds_expand);
+  times.num("verify", s.seconds_verify).num("total", s.seconds_total);
+  filter.num("semi_static", std::uint64_t(s.filter.semi_static));
+  filter.num("adaptive", std::uint64_t(s.filter.adaptive[0] + s.filter.adaptive[1] + s.filter.adaptive[2] + s.filter.adaptive[3]));
+  filter.num("interval", std::uint64_t(s.filter.interval)).num("mpfr", std::uint64_t(s.filter.mpfr));
+  filter.num("exact", std::uint64_t(s.filter.exact));
+  const algorithm::MapVerification& v = r->verification;
+  const bool success = r->outcome == algorithm::MapOutcome::success;
+  verdict.flag("exact_valid", success && v.ok()).flag("target_positive", v.target_positive);
+  verdict.flag("source_positive", v.source_positive).flag("input_kept", v.input_kept).flag("ball", v.ball);
+  verdict.flag("boundary_refines", v.boundary_refines);
+  verdict.flag("double_valid", double_valid).num("double_inverted", std::uint64_t(double_inverted));
+  verdict.num("double_degenerate", std::uint64_t(double_degenerate));
+  j.obj("input", in).obj("preprocess", pre).obj("expansion", ex).obj("output", out).obj("bits", bits);
+  j.obj("seconds", times).obj("predicates", filter).obj("verdict", verdict);
+  return j;
+}
+
+void write_report(const std::string& path, const JsonObject& j) {
+  if (path.empty()) return;
+  io::write_file_atomically(path, [&](std::ostream& os) { os << j.text() << '\n'; });
+}
+
+void progress_line(const algorithm::MapProgress& p) {
+  std::fprintf(stderr, "\r  expanded %zu, left %zu, added vertices %zu, max bits %zu, %.1f s   ", p.expanded, p.remaining,
+               p.splits, p.max_bits, p.seconds);
+  std::fflush(stderr);
+}
+
+int run(const std::vector<std::string>& argv) {
+  for (const auto& x : argv)
+    if (x == "--help" || x == "-h") {
+      std::fputs(usage, stdout);
+      return exit_ok;
+    }
+#ifdef CMX_HAVE_GLPK
+  lp::register_glpk_backend();
+#endif
+  Args a;
+  if (std::string why = parse_args(argv, a); !why.empty()) {
+    std::fprintf(stderr, "cmx map: %s\n%s", why.c_str(), usage);
+    return exit_usage;
+  }
+  algorithm::MapProblem problem;
+  try {
+    problem = load_map_problem(a.domain, a.boundary, a.codomain, a.shape, a.seed);
+  } catch (const io::IoError& e) {
+    std::fprintf(stderr, "cmx map: %s\n", e.what());
+    write_report(a.report, report_json(a, nullptr, "bad_input", e.what(), false, 0, 0));
+    return exit_bad_input;
+  } catch (const algorithm::MapError& e) {
+    std::fprintf(stderr, "cmx map: %s\n", e.what());
+    write_report(a.report, report_json(a, nullptr, algorithm::kind_name(e.kind()), e.what(), false, 0, 0));
+    return exit_code_of(e.kind());
+  }
+  const bool show_progress = !a.quiet && isatty(2);
+  if (show_progress) a.options.progress = progress_line;
+  algorithm::MapResult r;
+  try {
+    r = algorithm::map_to_domain(problem, a.options);
+  } catch (const algorithm::MapError& e) {
+    if (show_progress) std::fputc('\n', stderr);
+    std::fprintf(stderr, "cmx map: %s\n", e.what());
+    write_report(a.report, report_json(a, nullptr, algorithm::kind_name(e.kind()), e.what(), false, 0, 0));
+    return exit_code_of(e.kind());
+  }
+  if (show_progress) std::fputc('\n', stderr);
+  if (r.outcome != algorithm::MapOutcome::success) {
+    std::fprintf(stderr, "cmx map: %s: %s\n", algorithm::to_string(r.outcome), r.message.c_str());
+    write_report(a.report, report_json(a, &r, algorithm::to_string(r.outcome), r.message, false, 0, 0));
+    return r.outcome == algorithm::MapOutcome::time_limit ? exit_time_limit : exit_stuck;
+  }
+  const auto doubles = nearest(r.target);
+  const algorithm::DoubleCheck dc = algorithm::check_doubles(r.tets, doubles);
+  if (!a.out.empty()) {
+    std::string stem;
+    std::vector<std::string> formats;
+    output_plan(a, stem, formats);
+    write_outputs(stem, formats, r, doubles);
+  }
+  write_report(a.report, report_json(a, &r, "success", "", dc.valid(), dc.inverted, dc.degenerate));
+  if (!a.quiet) {
+    const auto& s = r.stats;
+    std::printf("map: success, verified exactly (every tet positive in source and target, boundary as prescribed)\n");
+    std::printf("  %zu vertices / %zu tets in, %zu / %zu out (growth %.4f), %zu splits in preprocessing\n",
+                s.input_vertices, s.input_tets, s.output_vertices, s.output_tets, s.growth_ratio,
+                s.split_topology + s.split_all_boundary_tet + s.split_no_shrink_point + s.split_fallback);
+    std::printf("  expansions: %zu simple, %zu star-shapified (%zu pushes), %zu inflated, %zu automatic\n",
+                s.expansions_simple, s.expansions_star_shapified, s.pushes, s.expansions_inflated, s.expansions_automatic);
+    std::printf("  largest coordinate: %zu bits; nearest doubles %s (%zu inverted, %zu degenerate)\n", s.max_bits,
+                dc.valid() ? "valid" : "NOT valid", dc.inverted, dc.degenerate);
+    std::printf("  %.3f s\n", s.seconds_total);
+  }
+  return exit_ok;
+}
+
+const bool registered = register_command({"map", "map a ball-topology tet mesh onto a star-shaped domain (exact)", run});
+
+}  // namespace
+}  // namespace cmx::cli
