@@ -71,7 +71,7 @@ TEST_CASE("double interval expressions enclose the exact rational value") {
   }
 }
 
-TEST_CASE("interval sign: certain, zero or uncertain; NaN is uncertain") {
+TEST_CASE("interval sign: certain, zero or uncertain, and NaN is uncertain") {
   CHECK(Interval(1, 2).sign() == Sign::positive);
   CHECK(Interval(-2, -1).sign() == Sign::negative);
   CHECK(Interval(0, 0).sign() == Sign::zero);

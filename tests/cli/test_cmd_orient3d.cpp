@@ -50,7 +50,7 @@ TEST_CASE("a malformed line gets an error naming it, no output, and exit status 
   CHECK(r.err.find("line 4: number 12:") != std::string::npos);
 }
 
-TEST_CASE("naive doubles are wrong on the demo case; --demo shows it") {
+TEST_CASE("naive doubles are wrong on the demo case and --demo shows it") {
   const std::string witness =
       "-233.33333333333334 50.93333333333333 0 200 49.200000000000003 0 166.66666666666669 49.333333333333336 0 0 0 1\n";
   // As exact decimals the cascade answers for the decimals; the demo uses the nearest doubles.
@@ -61,7 +61,7 @@ TEST_CASE("naive doubles are wrong on the demo case; --demo shows it") {
   CHECK(run_cmx({"orient3d", "--filter", "naive"}, witness).exit_code == 0);
 }
 
-TEST_CASE("--stats reports the deciding tiers; usage errors exit 2") {
+TEST_CASE("--stats reports the deciding tiers and usage errors exit 2") {
   const auto r = run_cmx({"orient3d", "--stats"}, known);
   CHECK(r.exit_code == 0);
   CHECK(r.err.find("semi-static") != std::string::npos);

@@ -157,7 +157,7 @@ TEST_CASE("TetGen 0- and 1-based, attributes and markers") {
   check_unit_tet(read_tet_mesh((dir / "c.node").string()));
 }
 
-TEST_CASE("OVM: properties skipped or kept; cell order from the first half-face") {
+TEST_CASE("OVM: properties skipped or kept, and cell order from the first half-face") {
   // Unit tet: edges 0:(0,1) 1:(1,2) 2:(2,0) 3:(0,3) 4:(1,3) 5:(2,3).
   // Faces (vertex cycles): 0:(0,1,2) 1:(0,2,3) 2:(0,3,1) 3:(1,3,2) - all pointing into the tet.
   const std::string text =

@@ -44,7 +44,7 @@ TEST_CASE("shrink-and-expand domains read with their boundary files") {
   }
 }
 
-TEST_CASE("galaxy-maps pairs read; boundary from the parameter mesh") {
+TEST_CASE("galaxy-maps pairs read, and boundary from the parameter mesh") {
   if (!have_shared_data()) return;
   const char* names[] = {"example", "cub_rockerarm291", "tlc_polycube_bird", "tgs_100349"};
   const std::size_t vertices[] = {7, 2328, 5650, 8895};

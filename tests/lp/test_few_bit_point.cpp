@@ -49,7 +49,7 @@ TEST_CASE("few-bit searches on random kernels: strictly inside, never longer tha
   CHECK(reduced[1] > total / 2);
 }
 
-TEST_CASE("few-bit searches: tiny kernels keep the centre; a low-bit start on a segment") {
+TEST_CASE("few-bit searches: tiny kernels keep the centre, and a low-bit start on a segment") {
   // A thin slab 0 < x < 2^-100 around x = 2^-101: doubles work (2^-101 is a double).
   const Rational e = Rational(1, Integer(1) << 100);
   const std::vector<HalfSpace> slab = {{1, 0, 0, e}, {-1, 0, 0, 0}, {0, 1, 0, 1}, {0, -1, 0, 1}, {0, 0, 1, 1}, {0, 0, -1, 1}};

@@ -160,7 +160,7 @@ TEST_CASE("Proposition 1: chi(M• \\ St(v)) = chi(M•) + chi(Lk•(v)) - 1") {
 }
 
 TEST_CASE("Proposition 2: removing v keeps a connected M• connected iff Lk•(v) is connected "
-          "(M• simply connected); Lk• connected always suffices") {
+          "(M• simply connected), and Lk• connected always suffices") {
   const GridComplex g = grid_complex(5, 5, 4);
   std::mt19937_64 rng(11);
   ClusterLinkWorkspace ws;

@@ -34,7 +34,7 @@ TEST_CASE("shelling of grids: every removal leaves a ball") {
   }
 }
 
-TEST_CASE("removability rule: a tet with four shared faces cannot go; a tet pinching an edge cannot go") {
+TEST_CASE("removability rule: neither a tet with four shared faces nor a tet pinching an edge can go") {
   const GridComplex g = grid_complex(3, 3, 3);
   std::vector<char> all(g.mesh.tet_capacity(), 1);
   const TetAdjacency adj = tet_adjacency(g.mesh);

@@ -52,7 +52,7 @@ TEST_CASE("topological expansion completes on grids in all three orders") {
   }
 }
 
-TEST_CASE("orders: index expands the lowest expandable id; priority prefers low k; random is seeded") {
+TEST_CASE("orders: index expands the lowest expandable id, priority prefers low k, random is seeded") {
   const GridComplex g = grid_complex(5, 5, 5);
   const auto idx = topological_expansion(g.mesh, {ExpansionOrderKind::index, 0});
   // The first interior vertex (1,1,1) is a corner of the interior block: its Lk• is a disc.
@@ -142,7 +142,7 @@ TEST_CASE("Bing's house NOBUENOSS: a ball whose interior is a contractible 2-com
   }
 }
 
-TEST_CASE("Furch's knotted hole: expansion reports stuck on a NOBUENOSS; the unknotted control completes") {
+TEST_CASE("Furch's knotted hole: expansion reports stuck on a NOBUENOSS and the unknotted control completes") {
   const GridComplex knot = knotted_hole_ball();
   const BallVerdict ball = check_ball(knot.mesh);
   REQUIRE_MESSAGE(ball.ok, ball.message);
