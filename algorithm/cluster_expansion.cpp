@@ -4,6 +4,7 @@
 #include <array>
 #include <deque>
 #include <queue>
+#include <tuple>
 #include <unordered_map>
 
 #include "algorithm/expansion_cone.hpp"
@@ -12,6 +13,7 @@
 #include "algorithm/placement.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/mesh_edits.hpp"
 
 namespace cmx::algorithm {
 
@@ -34,6 +36,18 @@ std::uint64_t splitmix(std::uint64_t x) {
   x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
   return x ^ (x >> 31);
 }
+
+// The expanded neighbours of a cluster vertex v: the cone base Lk°(v).
+struct Base {
+  std::vector<VertexId> verts;
+  std::unordered_map<VertexId, std::vector<VertexId>> adj;  // base edges
+  std::unordered_map<VertexId, int> tets;                   // base triangles at each vertex
+  std::vector<std::array<VertexId, 3>> triangles;
+};
+
+// Depth of local refinement: a star-shapification or inflation expands the vertices it pushes
+// right away, refining them in turn up to this depth; deeper, they go back to the queue.
+constexpr int max_depth = 3;
 
 class ClusterExpander {
  public:
@@ -136,11 +150,13 @@ class ClusterExpander {
 
   // --- classification ----------------------------------------------------------------------
 
+  // The class always comes first: refinement only when no simple expansion is left, whatever the
+  // order among equals (paper Sec. 4.1.2 for `priority`).
   std::array<std::int64_t, 4> key(Kind kind, int k, std::uint32_t expanded_neighbors, VertexId v) const {
     switch (s_.order.kind) {
-      case topology::ExpansionOrderKind::index: return {kind == Kind::automatic ? 0 : 1, 0, 0, v};
+      case topology::ExpansionOrderKind::index: return {std::int64_t(kind), 0, 0, v};
       case topology::ExpansionOrderKind::random:
-        return {kind == Kind::automatic ? 0 : 1, 0, 0, std::int64_t(splitmix(s_.order.seed ^ splitmix(v)) >> 1)};
+        return {std::int64_t(kind), 0, 0, std::int64_t(splitmix(s_.order.seed ^ splitmix(v)) >> 1)};
       case topology::ExpansionOrderKind::priority: break;
     }
     const std::int64_t kk = k == 0 ? 4 : k;
@@ -181,7 +197,7 @@ class ClusterExpander {
     return p;
   }
 
-  // --- operations --------------------------------------------------------------------------
+  // --- the loop's operations ---------------------------------------------------------------
 
   void handle(const Entry& entry) {
     const VertexId v = entry.v;
@@ -199,17 +215,9 @@ class ClusterExpander {
         return;
       }
       case Kind::star_shapify:
-        if (star_shapify(v, entry.k)) {
-          ++stats_.expansions_star_shapified;
-        } else {
-          ++failures_;
-          dirty_star(v);  // pushes may have changed neighbours; v itself waits for a change
-          is_dirty_[v] = 0;
-          dirty_.erase(std::remove(dirty_.begin(), dirty_.end(), v), dirty_.end());
-        }
-        return;
       case Kind::inflate:
-        if (!inflate(v)) ++failures_;
+        // A failure changes nothing that matters for v: it waits until its star changes.
+        if (!refine_and_expand(v, 0)) ++failures_;
         return;
     }
   }
@@ -234,6 +242,9 @@ class ClusterExpander {
   }
 
   // Splits edge (c, b) from cluster vertex c to expanded vertex b at a new cluster vertex at p_c.
+  // Keeps every invariant: the tets with the new vertex in place of c are copies of old ones
+  // (same positions, same number of cluster vertices), the others have two cluster vertices; and
+  // the cluster stays simply connected (the new vertex's unexpanded link is the cone from c).
   VertexId push(VertexId c, VertexId b) {
     for (TetId t : topology::tets_around_edge(e_.mesh, c, b))
       for (VertexId w : e_.mesh.tet(t))
@@ -246,14 +257,76 @@ class ClusterExpander {
     return m;
   }
 
-  // --- star-shapification by pushes ---------------------------------------------------------
+  // Collapses a pushed vertex x (still at p_c, in the cluster) back into cluster vertex c: the mesh
+  // is exactly as before the push.
+  void undo_push(VertexId c, VertexId x) {
+    const topology::CollapseResult r = topology::collapse_edge(e_.mesh, c, x);
+    if (!r.ok) throw MapError(MapErrorKind::internal, "could not undo a push: " + r.message);
+    e_.unexpanded[x] = 0;
+    --cluster_;
+    ++version_[x];
+    dirty_star(c);
+  }
 
-  struct Base {
-    std::vector<VertexId> verts;                       // expanded neighbours of v
-    std::unordered_map<VertexId, std::vector<VertexId>> adj;  // base edges
-    std::unordered_map<VertexId, int> tets;            // base tets containing each vertex
-    std::vector<std::array<VertexId, 3>> triangles;
-  };
+  // --- local refinement ----------------------------------------------------------------------
+
+  // Expands cluster vertex v now if it can be done: simply; after re-centring its base; by
+  // inflation of dangling base edges; by star-shapification. Each step keeps every invariant.
+  bool refine_and_expand(VertexId v, int depth) {
+    const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
+    if (!st.expandable) return false;
+    if (try_simple(v, st.manifold_k)) return true;
+    if (depth == 0 && relax_base(v) && try_simple(v, st.manifold_k)) return true;
+    if (has_dangling_edge(base_of(v))) {
+      if (!inflate(v, depth) || !e_.unexpanded[v]) return !e_.unexpanded[v];
+      if (try_simple(v, st.manifold_k)) return true;
+    }
+    if (bend_and_expand(v, st.manifold_k)) return true;
+    return star_shapify(v, st.manifold_k, depth, false);
+  }
+
+  bool try_simple(VertexId v, int k) {
+    const ExpansionCone cone = gather_expansion_cone(e_, v);
+    if (cone.base_tets == 0) return false;
+    const Placement p = place(cone, nullptr);
+    if (!p.ok()) return false;
+    expand_to(v, p.position, k);
+    ++stats_.expansions_simple;
+    return true;
+  }
+
+  // --- relaxation: re-centring the cone base ---------------------------------------------------
+  // The expanded non-boundary vertices of v's base move to the (precision-reduced) Chebyshev
+  // centres of their own stars' kernels. Such a move keeps every invariant (the kernel is exactly
+  // where every tet around the vertex keeps its state) and adds nothing; a cone that was only
+  // squeezed by neighbours crowding near p_c often opens. Bounded: each vertex moves at most
+  // twice (moves dirty their neighbours, which must not become an endless exchange).
+  bool relax_base(VertexId v) {
+    bool moved = false;
+    for (VertexId b : base_of(v).verts) {
+      if (e_.boundary[b] || relaxed_moves_[b] >= 2) continue;
+      ++relaxed_moves_[b];
+      const Placement p = place(gather_expansion_cone(e_, b), nullptr);
+      if (!p.ok() || p.position == e_.target[b]) continue;
+      e_.target[b] = p.position;
+      moved = true;
+      ++stats_.relaxations;
+      max_bits_ = std::max(max_bits_, p.position.bit_size());
+      dirty_star(b);
+      if (std::string why = check_local_invariant(e_, b); !why.empty())
+        throw MapError(MapErrorKind::internal, "re-centring broke an invariant: " + why, "vertex " + std::to_string(b));
+    }
+    return moved;
+  }
+
+  // --- star-shapification by pushes ------------------------------------------------------------
+  // A push moves a base vertex b of v out of v's base: the spoke (v, b) is split at a new cluster
+  // vertex at p_c. Base vertices are pushed away from a kept triangle T until v's cone has
+  // interior; it has when the base is T alone (a triangle's cone always has interior), so at most
+  // |base| - 3 pushes are needed. Pushes are chosen on a virtual state first (the chosen vertices
+  // flagged as cluster vertices at p_c, which is exactly v's star after the real pushes) and made
+  // only when they succeed, then v is expanded, then the pushed vertices, last first, each now
+  // between v and its base vertex.
 
   Base base_of(VertexId v) const {
     Base b;
@@ -277,29 +350,87 @@ class ClusterExpander {
     return b;
   }
 
-  // b's neighbours in Lk(v) (the link of edge vb) are one run of cluster vertices and one run of
-  // expanded vertices: pushing b keeps Eq. (1) for v.
-  bool pushable(VertexId v, VertexId b) const {
-    std::unordered_map<VertexId, int> seen;
-    int cluster_edges = 0;
+  static bool has_dangling_edge(const Base& base) {
+    std::vector<std::pair<VertexId, VertexId>> in_triangle;
+    for (const auto& t : base.triangles)
+      for (int i = 0; i < 3; ++i) in_triangle.emplace_back(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
+    std::sort(in_triangle.begin(), in_triangle.end());
+    for (const auto& [a, nbrs] : base.adj)
+      for (VertexId b : nbrs)
+        if (!std::binary_search(in_triangle.begin(), in_triangle.end(), std::make_pair(std::min(a, b), std::max(a, b))))
+          return true;
+    return false;
+  }
+
+  // The ring around spoke (v, b): pairs of vertices of the tets containing both.
+  std::vector<std::pair<VertexId, VertexId>> spoke_ring(VertexId v, VertexId b) const {
+    std::vector<std::pair<VertexId, VertexId>> ring;
     for (TetId t : topology::tets_around_edge(e_.mesh, v, b)) {
       VertexId xy[2];
       int n = 0;
       for (VertexId w : e_.mesh.tet(t))
         if (w != v && w != b) xy[n++] = w;
-      seen[xy[0]] = 1;
-      seen[xy[1]] = 1;
-      if (e_.unexpanded[xy[0]] && e_.unexpanded[xy[1]]) ++cluster_edges;
+      ring.emplace_back(xy[0], xy[1]);
     }
+    return ring;
+  }
+
+  // b's neighbours in Lk(v) are one run of cluster vertices and one run of expanded vertices:
+  // pushing b keeps Eq. (1) for v (chi(Lk•(v)) changes by 1 - runs).
+  bool pushable(VertexId v, VertexId b) const {
+    std::vector<VertexId> seen;
+    int cluster_edges = 0;
+    for (const auto& [x, y] : spoke_ring(v, b)) {
+      seen.push_back(x);
+      seen.push_back(y);
+      if (e_.unexpanded[x] && e_.unexpanded[y]) ++cluster_edges;
+    }
+    std::sort(seen.begin(), seen.end());
+    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
     int in_cluster = 0, expanded = 0;
-    for (const auto& [w, one] : seen) (e_.unexpanded[w] ? in_cluster : expanded) += one;
+    for (VertexId w : seen) (e_.unexpanded[w] ? in_cluster : expanded) += 1;
     return in_cluster >= 1 && expanded >= 1 && in_cluster - cluster_edges == 1;
   }
 
-  bool star_shapify(VertexId v, int k) {
+  // b is an ear of v's base disc: removing b's triangles leaves a disc (b's expanded neighbours
+  // in Lk(v) form an arc of at least two vertices whose inner vertices have no cluster neighbour
+  // in Lk(v); for an arc of two, their edge lies in a second base triangle).
+  bool is_ear(VertexId v, VertexId b) const {
+    const auto ring = spoke_ring(v, b);
+    std::vector<VertexId> expanded;
+    for (const auto& [x, y] : ring)
+      for (VertexId z : {x, y})
+        if (!e_.unexpanded[z]) expanded.push_back(z);
+    std::sort(expanded.begin(), expanded.end());
+    std::vector<VertexId> inner;  // arc vertices met twice and without a cluster ring neighbour
+    for (std::size_t i = 0; i < expanded.size(); ++i) {
+      if (i > 0 && expanded[i] == expanded[i - 1]) continue;
+      const bool twice = i + 1 < expanded.size() && expanded[i + 1] == expanded[i];
+      bool next_to_cluster = false;
+      for (const auto& [x, y] : ring)
+        if ((x == expanded[i] && e_.unexpanded[y]) || (y == expanded[i] && e_.unexpanded[x])) next_to_cluster = true;
+      if (twice && !next_to_cluster) inner.push_back(expanded[i]);
+    }
+    expanded.erase(std::unique(expanded.begin(), expanded.end()), expanded.end());
+    if (expanded.size() < 2) return false;
+    for (VertexId c : inner)
+      for (TetId t : e_.mesh.tets_of(c))
+        if (topology::contains(e_.mesh.tet(t), v))
+          for (VertexId z : e_.mesh.tet(t))
+            if (z != v && e_.unexpanded[z]) return false;
+    if (expanded.size() == 2) {
+      int base_triangles = 0;
+      for (TetId t : topology::tets_around_edge(e_.mesh, expanded[0], expanded[1]))
+        if (topology::contains(e_.mesh.tet(t), v) && e_.unexpanded_count(e_.mesh.tet(t)) == 1) ++base_triangles;
+      return base_triangles == 2;
+    }
+    return true;
+  }
+
+  bool star_shapify(VertexId v, int k, int depth, bool leaves) {
     Base base = base_of(v);
     if (base.triangles.empty()) return false;
-    // Witness: the base vertex in most base tets; kept: one base triangle through it.
+    // Witness: the base vertex in most base triangles; kept: one base triangle through it.
     VertexId w = base.verts.front();
     for (VertexId x : base.verts)
       if (base.tets[x] > base.tets[w]) w = x;
@@ -309,23 +440,204 @@ class ClusterExpander {
         keep = tri;
         break;
       }
-    for (;;) {
-      const Placement p = place(gather_expansion_cone(e_, v), &w);
-      if (p.ok()) {
-        expand_to(v, p.position, k);
-        return true;
+    std::vector<std::pair<VertexId, HPoint>> virtual_pushes;
+    auto undo_virtual = [&] {
+      for (auto it = virtual_pushes.rbegin(); it != virtual_pushes.rend(); ++it) {
+        e_.unexpanded[it->first] = 0;
+        e_.target[it->first] = it->second;
       }
+    };
+    Placement p;
+    for (;;) {
+      p = place(gather_expansion_cone(e_, v), &w);
+      if (p.ok()) break;
       base = base_of(v);
-      const std::optional<VertexId> b = choose_push(v, w, keep, base);
-      if (!b) return false;
-      push(v, *b);
+      const std::optional<VertexId> b = choose_push(v, w, keep, base, leaves);
+      if (!b) {
+        undo_virtual();
+        return false;
+      }
+      virtual_pushes.emplace_back(*b, e_.target[*b]);
+      e_.unexpanded[*b] = 1;
+      e_.target[*b] = e_.center;
+    }
+    undo_virtual();
+    std::vector<VertexId> pushed;
+    for (const auto& [b, position] : virtual_pushes) {
+      pushed.push_back(push(v, b));
       ++stats_.pushes;
-      if (auto stop = check_limits()) return false;
+    }
+    expand_to(v, p.position, k);
+    ++stats_.expansions_star_shapified;
+    if (depth + 1 < max_depth)
+      for (auto it = pushed.rbegin(); it != pushed.rend(); ++it)
+        if (e_.unexpanded[*it]) refine_and_expand(*it, depth + 1);
+    return true;
+  }
+
+  // --- star-shapification by bends ------------------------------------------------------------
+  // A bend of base vertex b of v splits the spoke (v, b) at a new vertex b' and places b' at once
+  // as an expanded vertex, v still at p_c. Its star is the spoke's tets: those with b' in place of
+  // v (b' inside the fan of b) and those with b' in place of b (v at p_c). With v in the cluster
+  // the new vertex's cone is a fan around b, which always has interior; so every bend is possible
+  // and keeps every invariant, and the cluster never grows. For v, b' replaces b in its link with
+  // another direction from p_c: bending the endpoints of the base boundary edges that hide the
+  // aim point (the centroid of a base triangle) from p_c, with the extra linear constraints that
+  // the two new boundary edges at b' show it, straightens the cone until it has interior.
+  // Bends are computed on a virtual state (b moved to b's position, which is exactly v's star
+  // after the real split) and made only when v's cone has interior.
+
+  // The cone of the vertex a bend of spoke (v, b) creates, in the current (virtual) state.
+  ExpansionCone bend_cone(VertexId v, VertexId b) const {
+    ExpansionCone cone;
+    for (TetId t : topology::tets_around_edge(e_.mesh, v, b)) {
+      const topology::Tet& tet = e_.mesh.tet(t);
+      const int cluster = e_.unexpanded_count(tet);  // v included
+      // The piece with b' in place of v: b' must see the face opposite v from inside.
+      if (cluster - 1 <= 1) add_face(cone, tet, topology::local_index(tet, v), cluster - 1 == 0);
+      // The piece with b' in place of b, v at p_c: a constraint when v is its only cluster vertex.
+      if (cluster == 1) add_face(cone, tet, topology::local_index(tet, b), false);
+    }
+    return cone;
+  }
+
+  void add_face(ExpansionCone& cone, const topology::Tet& tet, int i, bool base) const {
+    const topology::Triangle f = topology::tet_face(tet, i);
+    InnerHalfSpace h = inner_halfspace(e_.target[f[0]], e_.target[f[1]], e_.target[f[2]]);
+    if (h.is_degenerate()) cone.degenerate = true;
+    (base ? cone.base_tets : cone.side_tets) += 1;
+    cone.halfspaces.push_back(std::move(h));
+  }
+
+  // Constraints on the bent position q of b for v's side tets through b to show `aim`: the face
+  // opposite v with q in b's place must have aim strictly on its inner side.
+  // With `one`, only the first constraint the current position violates.
+  void add_aim_constraints(ExpansionCone& cone, VertexId v, VertexId b, const HPoint& aim, bool one) const {
+    for (TetId t : topology::tets_around_edge(e_.mesh, v, b)) {
+      const topology::Tet& tet = e_.mesh.tet(t);
+      if (e_.unexpanded_count(tet) != 2) continue;
+      if (one) {
+        const topology::Triangle f0 = topology::tet_face(tet, topology::local_index(tet, v));
+        const InnerHalfSpace now = inner_halfspace(e_.target[f0[0]], e_.target[f0[1]], e_.target[f0[2]]);
+        if (!now.is_degenerate() && side_of(now, aim) == Sign::negative) continue;
+      }
+      // orient(f with q) < 0 at aim  <=>  orient(f with aim in q's slot, q) > 0 (one transposition)
+      topology::Triangle f = topology::tet_face(tet, topology::local_index(tet, v));
+      HPoint g[3] = {e_.target[f[0]], e_.target[f[1]], e_.target[f[2]]};
+      for (int i = 0; i < 3; ++i)
+        if (f[i] == b) g[i] = aim;
+      InnerHalfSpace h = inner_halfspace(g[0], g[2], g[1]);
+      if (h.is_degenerate()) cone.degenerate = true;
+      cone.halfspaces.push_back(std::move(h));
+      if (one) return;
     }
   }
 
-  // The pushable base vertex farthest from the witness (in base edges), fewest base tets first.
-  std::optional<VertexId> choose_push(VertexId v, VertexId w, const std::array<VertexId, 3>& keep, Base& base) const {
+  bool bend_and_expand(VertexId v, int k) {
+    Base base = base_of(v);
+    if (base.triangles.empty() || has_dangling_edge(base)) return false;
+    VertexId w = base.verts.front();
+    for (VertexId x : base.verts)
+      if (base.tets[x] > base.tets[w]) w = x;
+    std::array<VertexId, 3> keep{};
+    for (const auto& tri : base.triangles)
+      if (std::find(tri.begin(), tri.end(), w) != tri.end()) {
+        keep = tri;
+        break;
+      }
+    const HPoint corners[3] = {e_.target[keep[0]], e_.target[keep[1]], e_.target[keep[2]]};
+    const Rational third(1, 3), thirds[3] = {third, third, third};
+    const HPoint aim = convex_combination(corners, thirds, 3);
+
+    struct Bend {
+      VertexId b;
+      HPoint original, q;
+    };
+    std::vector<Bend> bends;
+    std::unordered_map<VertexId, int> bent;
+    auto undo_virtual = [&] {
+      for (auto it = bends.rbegin(); it != bends.rend(); ++it) e_.target[it->b] = it->original;
+    };
+    const std::size_t cap = 2 * base.verts.size() + 8;
+    Placement p;
+    for (;;) {
+      p = place(gather_expansion_cone(e_, v), &w);
+      if (p.ok()) break;
+      if (bends.size() >= cap) {
+        undo_virtual();
+        return false;
+      }
+      std::optional<HPoint> q;
+      VertexId b = 0;
+      const auto bl = blockers(v, aim);
+      // Fix both boundary edges at a blocker if possible, else one, else move it inward.
+      for (int level = 0; level < 3 && !q; ++level)
+        for (const auto& [count, x] : bl) {
+          if (bent[x] >= 2) continue;
+          ExpansionCone cone = bend_cone(v, x);
+          if (level < 2) add_aim_constraints(cone, v, x, aim, level == 1);
+          const Placement r = place(cone, nullptr);
+          if (!r.ok()) continue;
+          q = r.position;
+          b = x;
+          break;
+        }
+      if (!q) {
+        undo_virtual();
+        return false;
+      }
+      ++bent[b];
+      bends.push_back({b, e_.target[b], *q});
+      e_.target[b] = *q;
+    }
+    undo_virtual();
+    // Make the bends: each split's new vertex replaces the previous one of its chain in v's link.
+    std::unordered_map<VertexId, VertexId> current;
+    for (const Bend& bend : bends) {
+      const VertexId from = current.count(bend.b) ? current[bend.b] : bend.b;
+      const VertexId m = e_.split_edge(v, from, bend.q, false);
+      grow();
+      current[bend.b] = m;
+      ++stats_.bends;
+      max_bits_ = std::max(max_bits_, bend.q.bit_size());
+      if (std::string why = check_local_invariant(e_, m); !why.empty())
+        throw MapError(MapErrorKind::internal, "a bend broke an invariant: " + why, "vertex " + std::to_string(m));
+    }
+    expand_to(v, p.position, k);
+    ++stats_.expansions_star_shapified;
+    return true;
+  }
+
+  // Expanded endpoints of v's side constraints that hide `aim`, most often first.
+  std::vector<std::pair<int, VertexId>> blockers(VertexId v, const HPoint& aim) const {
+    std::vector<std::pair<int, VertexId>> out;
+    for (const auto& [x, count] : blocking_endpoints(v, aim)) out.emplace_back(-count, x);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // Side constraints of v that the direction toward `aim` violates, counted per expanded
+  // endpoint: the planes through p_c and a base boundary edge that keep v from moving that way.
+  std::unordered_map<VertexId, int> blocking_endpoints(VertexId v, const HPoint& aim) const {
+    std::unordered_map<VertexId, int> count;
+    for (TetId t : e_.mesh.tets_of(v)) {
+      const topology::Tet& tet = e_.mesh.tet(t);
+      if (e_.unexpanded_count(tet) != 2) continue;
+      const topology::Triangle f = topology::tet_face(tet, topology::local_index(tet, v));
+      const InnerHalfSpace h = inner_halfspace(e_.target[f[0]], e_.target[f[1]], e_.target[f[2]]);
+      if (!h.is_degenerate() && side_of(h, aim) == Sign::negative) continue;
+      for (VertexId x : f)
+        if (!e_.unexpanded[x]) ++count[x];
+    }
+    return count;
+  }
+
+  // Ears first (the base stays a disc), then vertices blocking the direction toward the kept
+  // triangle most often, then the farthest from the witness in base edges, then the fewest base
+  // triangles. Only vertices on a base triangle: a pushed vertex then has a base of two fans over
+  // an arc of at least two vertices rather than a bare path, which would need inflation in turn.
+  std::optional<VertexId> choose_push(VertexId v, VertexId w, const std::array<VertexId, 3>& keep, Base& base,
+                                      bool leaves) const {
     std::unordered_map<VertexId, int> dist;
     std::deque<VertexId> q{w};
     dist[w] = 0;
@@ -338,11 +650,16 @@ class ClusterExpander {
           q.push_back(y);
         }
     }
+    const HPoint corners[3] = {e_.target[keep[0]], e_.target[keep[1]], e_.target[keep[2]]};
+    const Rational third(1, 3), thirds[3] = {third, third, third};
+    std::unordered_map<VertexId, int> blocks = blocking_endpoints(v, convex_combination(corners, thirds, 3));
     std::optional<VertexId> best;
-    std::tuple<int, int, VertexId> best_key{};
+    std::tuple<int, int, int, int, VertexId> best_key{};
     for (VertexId b : base.verts) {
-      if (std::find(keep.begin(), keep.end(), b) != keep.end() || !pushable(v, b)) continue;
-      const std::tuple<int, int, VertexId> key{-(dist.count(b) ? dist[b] : 1 << 20), base.tets[b], b};
+      if (std::find(keep.begin(), keep.end(), b) != keep.end() || (base.tets[b] == 0 && !leaves) || !pushable(v, b))
+        continue;
+      const std::tuple<int, int, int, int, VertexId> key{is_ear(v, b) ? 0 : 1, -blocks[b],
+                                                         -(dist.count(b) ? dist[b] : 1 << 20), base.tets[b], b};
       if (!best || key < best_key) {
         best = b;
         best_key = key;
@@ -352,54 +669,57 @@ class ClusterExpander {
   }
 
   // --- inflation -----------------------------------------------------------------------------
+  // A base edge (a, b) in no base triangle has cluster vertices u, u' on both sides in Lk(v): the
+  // side planes through p_c, a, b face each other and flatten the kernel (paper Sec. 3.1, Fig. 4).
+  // Inflation splits the edge (b, u) (or (a, u), (b, u'), (a, u')) at a new vertex x, pushed to
+  // p_c and expanded at once (its unexpanded link is the cone from u, so Eq. (1) holds); (a, b, x)
+  // is then a base triangle of v. An x that cannot be expanded is collapsed back into u, which
+  // restores the mesh exactly: inflation never leaves refinement behind without progress.
+  // Attempts per vertex are bounded; the refinement budget bounds the total.
 
-  bool inflate(VertexId v) {
-    if (++inflations_[v] > 2) return false;
-    std::vector<VertexId> added;
-    for (VertexId b : topology::expanded_link_cut_vertices(e_.mesh, v, e_.unexpanded)) {
-      std::vector<VertexId> cs;
-      for (TetId t : topology::tets_around_edge(e_.mesh, v, b))
-        for (VertexId c : e_.mesh.tet(t))
-          if (c != v && e_.unexpanded[c]) cs.push_back(c);
-      std::sort(cs.begin(), cs.end());
-      cs.erase(std::unique(cs.begin(), cs.end()), cs.end());
-      for (VertexId c : cs) {
-        added.push_back(push(c, b));
-        ++stats_.inflation_splits;
+  // Base edges of v in no base triangle, with the cluster vertices of their two Lk(v) triangles.
+  std::vector<std::array<VertexId, 4>> dangling_edges(VertexId v) const {
+    const Base base = base_of(v);
+    std::vector<std::array<VertexId, 4>> out;
+    for (const auto& [a, nbrs] : base.adj)
+      for (VertexId b : nbrs) {
+        if (a > b) continue;
+        std::vector<VertexId> sides;
+        bool in_triangle = false;
+        for (TetId t : topology::tets_around_edge(e_.mesh, v, a))
+          if (topology::contains(e_.mesh.tet(t), b))
+            for (VertexId z : e_.mesh.tet(t))
+              if (z != v && z != a && z != b) {
+                if (e_.unexpanded[z]) sides.push_back(z);
+                else in_triangle = true;
+              }
+        if (!in_triangle && !sides.empty()) out.push_back({a, b, sides[0], sides.size() > 1 ? sides[1] : sides[0]});
       }
-    }
-    if (added.empty()) return false;
-    // Cluster isolation: expand the new vertices one by one, in passes while any succeeds.
-    for (bool progress = true; progress && !added.empty();) {
-      progress = false;
-      for (auto it = added.begin(); it != added.end();) {
-        if (expand_isolated(*it)) {
-          it = added.erase(it);
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  bool inflate(VertexId v, int depth) {
+    if (depth + 1 >= max_depth || ++inflations_[v] > 4) return false;
+    bool progress = false;
+    for (const auto& [a, b, u1, u2] : dangling_edges(v)) {
+      if (!e_.unexpanded[v]) break;
+      if (!e_.unexpanded[u1] || !e_.unexpanded[u2]) continue;  // changed by an earlier inflation
+      for (const auto& [end, u] : {std::pair{b, u1}, std::pair{a, u1}, std::pair{b, u2}, std::pair{a, u2}}) {
+        if (topology::tets_around_edge(e_.mesh, end, u).empty()) continue;
+        const VertexId x = push(u, end);
+        if (refine_and_expand(x, depth + 1)) {
+          ++stats_.inflation_splits;
           progress = true;
-        } else {
-          ++it;
+          break;
         }
+        if (!e_.unexpanded[x]) break;  // expanded after all, by a deeper refinement
+        undo_push(u, x);
       }
     }
     dirty(v);
-    if (added.empty()) ++stats_.expansions_inflated;
-    return added.empty();
-  }
-
-  bool expand_isolated(VertexId x) {
-    const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, x, e_.unexpanded, ws_);
-    if (!st.expandable) return false;
-    const ExpansionCone cone = gather_expansion_cone(e_, x);
-    if (cone.base_tets == 0) return false;
-    const Placement p = place(cone, nullptr);
-    if (p.ok()) {
-      expand_to(x, p.position, st.manifold_k);
-      ++stats_.expansions_simple;
-      return true;
-    }
-    if (!star_shapify(x, st.manifold_k)) return false;
-    ++stats_.expansions_star_shapified;
-    return true;
+    if (progress) ++stats_.expansions_inflated;
+    return progress;
   }
 
   Embedding& e_;
@@ -411,7 +731,7 @@ class ClusterExpander {
   std::vector<std::optional<Placement>> cached_;
   std::vector<char> is_dirty_;
   std::vector<VertexId> dirty_;
-  std::unordered_map<VertexId, int> inflations_;
+  std::unordered_map<VertexId, int> inflations_, relaxed_moves_;
   std::size_t cluster_ = 0, expanded_ = 0, failures_ = 0, max_bits_ = 0;
   std::chrono::steady_clock::time_point last_report_{};
 };

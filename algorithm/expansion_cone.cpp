@@ -9,7 +9,7 @@ ExpansionCone gather_expansion_cone(const Embedding& e, VertexId v) {
   cone.apex = v;
   for (TetId t : e.mesh.tets_of(v)) {
     const topology::Tet& tet = e.mesh.tet(t);
-    const int others = e.unexpanded_count(tet) - 1;
+    const int others = e.unexpanded_count(tet) - (e.unexpanded[v] ? 1 : 0);
     if (others >= 2) continue;
     const int i = topology::local_index(tet, v);
     const topology::Triangle f = topology::tet_face(tet, i);

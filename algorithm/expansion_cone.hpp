@@ -30,6 +30,8 @@ struct ExpansionCone {
   bool degenerate = false;
 };
 
+// For an expanded vertex the same constraints describe where it may move (its star's kernel,
+// cluster vertices at p_c): used to re-centre neighbours of the cluster.
 ExpansionCone gather_expansion_cone(const Embedding& e, VertexId v);
 
 // The cone's constraints as LP half-spaces a x + b y + c z <= d.

@@ -1,8 +1,10 @@
 #include "algorithm/map.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include "algorithm/cluster_expansion.hpp"
+#include "algorithm/collapse_pass.hpp"
 #include "algorithm/embedding.hpp"
 #include "algorithm/invariants.hpp"
 #include "algorithm/preprocess.hpp"
@@ -41,6 +43,16 @@ Embedding initial_embedding(const ValidatedProblem& v, const MapOptions& options
     else e.unexpanded[i] = 1;  // every vertex is in a tet (ball check), so non-boundary = interior
   }
   return e;
+}
+
+double boundary_extent(const std::vector<HPoint>& points) {
+  if (points.empty()) return 0;
+  std::array<double, 3> lo = points[0].approx(), hi = lo;
+  for (const HPoint& p : points) {
+    const auto a = p.approx();
+    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], a[i]), hi[i] = std::max(hi[i], a[i]);
+  }
+  return std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
 }
 
 void output_statistics(const Embedding& e, MapResult& r) {
@@ -84,6 +96,8 @@ MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
   if (std::string why = check_invariants(e, prescribed); !why.empty())
     throw MapError(MapErrorKind::internal, "the shrunk state breaks an invariant: " + why);
   s.degenerate_after_shrink = topology::count_degenerate_tets(e.mesh, e.unexpanded);
+  s.shrink_radius = pre.shrink_radius;
+  s.boundary_extent = boundary_extent(v.boundary_positions);
   r.center = e.center;
   s.seconds_preprocess = seconds_since(phase);
 
@@ -101,6 +115,12 @@ MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
   settings.vertex_budget = std::max<std::size_t>(200000, 50 * s.input_vertices);
   const ExpansionOutcome out = expand_cluster(e, settings, s);
   s.seconds_expand = seconds_since(phase);
+  if (out.outcome == MapOutcome::success && options.collapse) {
+    phase = Clock::now();
+    s.collapsed = collapse_added_vertices(e, s.input_vertices);
+    s.seconds_collapse = seconds_since(phase);
+  }
+  compact_vertices(e, s.input_vertices);  // vertices collapsed away, or inflation splits undone
   r.outcome = out.outcome;
   r.message = out.message;
 

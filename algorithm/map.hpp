@@ -44,6 +44,7 @@ struct MapOptions {
   topology::ExpansionOrder order;             // priority (default), index, random:SEED
   double time_limit_seconds = 0;              // 0 = none
   bool check = false;                         // assert every invariant after every step (slow)
+  bool collapse = true;                       // collapse added vertices when the map stays valid
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
 };
 
@@ -56,12 +57,17 @@ struct MapStatistics {
   std::size_t split_fallback = 0;             // the predecessor's split-every-chord fallback
   std::size_t vertices_after_preprocess = 0, tets_after_preprocess = 0;
   std::size_t degenerate_after_shrink = 0;
+  double shrink_radius = 0;                   // radius of the ball around p_c inside every shrink constraint
+  double boundary_extent = 0;                 // largest side of the prescribed boundary's bounding box
   // Expansion.
   std::size_t expansions_simple = 0, expansions_star_shapified = 0, expansions_inflated = 0,
               expansions_automatic = 0;
   std::size_t k_manifold[4] = {0, 0, 0, 0};   // expansions of k-manifold-expandable vertices (k=1..3; [0]: other)
   std::size_t pushes = 0;                     // vertices pushed into the cluster (star-shapification)
+  std::size_t bends = 0;                      // spoke splits of star-shapification (new expanded vertices)
+  std::size_t relaxations = 0;                // expanded vertices re-centred in their star's kernel
   std::size_t inflation_splits = 0;
+  std::size_t collapsed = 0;                  // added vertices collapsed away at the end
   std::size_t lps = 0, lps_certified = 0, lps_fell_back = 0;
   // Output.
   std::size_t output_vertices = 0, output_tets = 0;
@@ -69,7 +75,8 @@ struct MapStatistics {
   std::size_t max_bits = 0;                   // largest homogeneous coordinate of any target position
   double mean_bits = 0;
   // Times (seconds).
-  double seconds_validate = 0, seconds_preprocess = 0, seconds_expand = 0, seconds_verify = 0, seconds_total = 0;
+  double seconds_validate = 0, seconds_preprocess = 0, seconds_expand = 0, seconds_collapse = 0, seconds_verify = 0,
+         seconds_total = 0;
   FilterStats filter;
 };
 

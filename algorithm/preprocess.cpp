@@ -6,6 +6,7 @@
 #include <set>
 
 #include "algorithm/map_error.hpp"
+#include "arith/rounding.hpp"
 #include "lp/few_bit_point.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
@@ -25,20 +26,28 @@ class Preprocessor {
   Preprocessor(Embedding& e, const ValidatedProblem& p, const PlacementOptions& o) : e_(e), problem_(p), options_(o) {}
 
   PreprocessResult run() {
-    connect_cluster();
-    fill_cluster_holes();
-    geometry();
-    if (!cluster_simply_connected()) {
-      split_all_chords();
-      geometry();
-      if (!cluster_simply_connected())
-        throw MapError(MapErrorKind::internal, "the cluster mesh is not simply connected after splitting every chord");
+    // Topology and geometry alternate: a geometric split can open a loop in the cluster mesh
+    // (both sides of a split face interior), which the next topological pass closes. Each round
+    // splits only interior simplices whose vertices are all on the boundary, so rounds end; the
+    // predecessor's split-everything configuration ends them for sure.
+    choose_centre();
+    for (int round = 0;; ++round) {
+      connect_cluster();
+      fill_cluster_holes();
+      const std::size_t splits = geometry_pass();
+      if (cluster_simply_connected() && splits == 0) break;
+      if (round == 8 || (splits == 0 && !cluster_simply_connected())) {
+        split_all_chords();
+        geometry_pass();
+        break;
+      }
     }
+    if (!cluster_simply_connected())
+      throw MapError(MapErrorKind::internal, "the cluster mesh is not simply connected after splitting every chord");
     finish();
     return result_;
   }
 
- private:
   // --- combinatorial helpers ---------------------------------------------------------------
 
   bool is_boundary_face(const Triangle& f) const {
@@ -115,7 +124,14 @@ class Preprocessor {
       const std::vector<Triangle> path = chord_path_between_components();
       if (path.empty()) return;  // cannot connect: the fallback splits every chord
       for (const Triangle& f : path) {
-        split_face(f);
+        // Both tets at f contain each edge of f: splitting a chord edge of f joins them too, and
+        // removes the chord (the predecessor splits every chord edge anyway).
+        if (topology::tets_around_face(e_.mesh, f[0], f[1], f[2]).empty()) continue;  // split already
+        int edge = -1;
+        for (int i = 0; i < 3 && edge < 0; ++i)
+          if (is_chord_edge(f[i], f[(i + 1) % 3])) edge = i;
+        if (edge >= 0) split_edge(f[edge], f[(edge + 1) % 3]);
+        else split_face(f);
         ++result_.split_topology;
       }
     }
@@ -244,11 +260,36 @@ class Preprocessor {
 
   // --- geometry: the shrink point ----------------------------------------------------------
 
-  void geometry() {
+  // The centre every one-interior-vertex tet is tested against: the Chebyshev centre of the
+  // kernel and all their half-spaces when that has interior (no split needed at all), else the
+  // Chebyshev centre of the kernel alone.
+  void choose_centre() {
     accepted_.clear();
     for (const auto& h : problem_.kernel) accepted_.push_back(to_lp(h));
+    const std::size_t kernel_rows = accepted_.size();
+    for (TetId t : e_.mesh.live_tets()) {
+      const topology::Tet& tet = e_.mesh.tet(t);
+      if (e_.unexpanded_count(tet) != 1) continue;
+      int u = 0;
+      while (!e_.unexpanded[tet[u]]) ++u;
+      const Triangle f = topology::tet_face(tet, u);
+      if (is_boundary_face(f)) continue;
+      const InnerHalfSpace h = inner_halfspace(e_.target[f[0]], e_.target[f[1]], e_.target[f[2]]);
+      if (!h.is_degenerate()) accepted_.push_back(to_lp(h));
+    }
+    if (accepted_.size() > kernel_rows) {
+      solve();
+      if (centre_) return;
+      accepted_.resize(kernel_rows);
+    }
     solve();
     if (!centre_) throw MapError(MapErrorKind::internal, "the boundary kernel lost its interior");
+  }
+
+  // Splits, in tet order and then in the pieces made, whatever is invalid for the centre;
+  // returns the number of splits.
+  std::size_t geometry_pass() {
+    std::size_t splits = 0;
     std::deque<TetId> work;
     for (TetId t : e_.mesh.live_tets()) work.push_back(t);
     while (!work.empty()) {
@@ -257,8 +298,10 @@ class Preprocessor {
       if (!e_.mesh.is_alive(t)) continue;
       VertexId m = topology::invalid_index;
       if (!fix_tet(t, m)) continue;
+      ++splits;
       for (TetId n : e_.mesh.tets_of(m)) work.push_back(n);
     }
+    return splits;
   }
 
   // Splits something when tet t is invalid for every acceptable shrink point; returns whether it
@@ -270,7 +313,7 @@ class Preprocessor {
     if (interior == 0) {
       if (e_.orient_target(tet) == Sign::positive) return false;
       ++result_.split_all_boundary_tet;
-      added = split_face(best_interior_face(tet));
+      added = split_all_boundary(tet);
       return true;
     }
     int u = 0;
@@ -283,20 +326,30 @@ class Preprocessor {
     return true;
   }
 
-  // The chord face f of a one-interior-vertex tet conflicts: split f when its other side has no
-  // interior vertex (the cluster gains a vertex hanging from one neighbour: its topology is
-  // unchanged), else a chord edge of f whose cycle has one interior run (same reason).
+  // The chord face f of a one-interior-vertex tet conflicts. A chord edge of f is split when f
+  // has one (it removes every tet around the chord from the constraints at once, as the
+  // predecessor's chord splits do), preferring one whose cycle has a single interior run (the
+  // cluster's topology is then unchanged); else f itself.
   VertexId split_conflict(const Triangle& f) {
-    const auto around = topology::tets_around_face(e_.mesh, f[0], f[1], f[2]);
-    int interior_sides = 0;
-    for (TetId n : around) interior_sides += e_.unexpanded_count(e_.mesh.tet(n)) > 0 ? 1 : 0;
-    if (interior_sides >= 2)
-      for (int i = 0; i < 3; ++i) {
-        const VertexId a = f[i], b = f[(i + 1) % 3];
-        bool all_interior = false;
-        if (is_chord_edge(a, b) && interior_runs(a, b, all_interior) == 1) return split_edge(a, b);
-      }
+    int best = -1, best_runs = 0;
+    for (int i = 0; i < 3; ++i) {
+      const VertexId a = f[i], b = f[(i + 1) % 3];
+      if (!is_chord_edge(a, b)) continue;
+      bool all_interior = false;
+      const int runs = interior_runs(a, b, all_interior);
+      if (best < 0 || (runs == 1 && best_runs != 1)) best = i, best_runs = runs;
+    }
+    if (best >= 0) return split_edge(f[best], f[(best + 1) % 3]);
     return split_face(f);
+  }
+
+  // An invalid all-boundary tet: a chord edge when it has one (see split_conflict), else an
+  // interior face.
+  VertexId split_all_boundary(const topology::Tet& tet) {
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j)
+        if (is_chord_edge(tet[i], tet[j])) return split_edge(tet[i], tet[j]);
+    return split_face(best_interior_face(tet));
   }
 
   // An interior face of the all-boundary tet, preferring one whose neighbour has interior
@@ -318,20 +371,9 @@ class Preprocessor {
   }
 
   bool accept(const InnerHalfSpace& h) {
-    if (h.is_degenerate()) return false;
-    if (side_of(h, *centre_) == Sign::negative) {
-      accepted_.push_back(to_lp(h));
-      return true;
-    }
+    if (h.is_degenerate() || side_of(h, *centre_) != Sign::negative) return false;
     accepted_.push_back(to_lp(h));
-    const std::optional<HPoint> before = centre_;
-    const lp::ChebyshevResult keep = last_;
-    solve();
-    if (centre_) return true;
-    accepted_.pop_back();
-    centre_ = before;
-    last_ = keep;
-    return false;
+    return true;
   }
 
   void solve() {
@@ -348,6 +390,7 @@ class Preprocessor {
   void finish() {
     solve();
     if (!centre_) throw MapError(MapErrorKind::internal, "the shrink point constraints lost their interior");
+    result_.shrink_radius = to_double(last_.radius);
     const lp::FewBitResult few = lp::few_bits_by_dyadics(accepted_, last_.center);
     e_.center = HPoint(few.point[0], few.point[1], few.point[2]);
     for (VertexId v = 0; v < e_.num_vertices(); ++v)
@@ -357,7 +400,7 @@ class Preprocessor {
   Embedding& e_;
   const ValidatedProblem& problem_;
   const PlacementOptions& options_;
-  std::vector<lp::HalfSpace> accepted_;
+  std::vector<lp::HalfSpace> accepted_;  // every half-space the centre satisfies strictly
   std::optional<HPoint> centre_;
   lp::ChebyshevResult last_;
   PreprocessResult result_;

@@ -32,6 +32,7 @@ struct PreprocessResult {
   std::size_t split_no_shrink_point = 0;   // one-interior-vertex tet no shrink point could make positive
   std::size_t split_fallback = 0;          // the predecessor's split-everything fallback
   std::size_t lps = 0;
+  double shrink_radius = 0;  // Chebyshev radius around p_c (of everything accepted), nearest double
 };
 
 // `e` holds the validated mesh with boundary vertices at their prescribed positions and every

@@ -31,7 +31,7 @@ namespace {
 constexpr const char* usage =
     "usage: cmx map DOMAIN (--boundary B.txt | --codomain MESH | --shape SHAPE) [-o OUT]\n"
     "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--time-limit S] [--check]\n"
-    "               [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
+    "               [--no-collapse] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
     "               [--quiet]\n"
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
@@ -47,6 +47,8 @@ constexpr const char* usage =
     "  --report R.json   statistics and verdicts as JSON\n"
     "  --time-limit S    stop after S seconds (exit 6)\n"
     "  --check           assert every invariant after every step (slow; for testing)\n"
+    "  --no-collapse     keep every added vertex (by default added vertices are collapsed away at\n"
+    "                    the end wherever the map stays valid)\n"
     "  --order ORDER     expansion order (default priority: paper Sec. 4.1.2)\n"
     "  --seed N          seed of random orders and of generated shapes (default 1234)\n"
     "  --precision P     precision reduction of new positions (default dyadic)\n"
@@ -141,6 +143,8 @@ std::string parse_args(const std::vector<std::string>& args, Args& a) {
       const auto n = lp::parse_norm(v);
       if (!n) return "unknown norm '" + v + "' (l2-upper, l1)";
       a.options.placement.lp.norm = *n;
+    } else if (x == "--no-collapse") {
+      a.options.collapse = false;
     } else if (x == "--check") {
       a.check = true;
     } else if (x == "--quiet" || x == "-q") {
@@ -249,6 +253,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   pre.num("splits_fallback", std::uint64_t(s.split_fallback));
   pre.num("vertices", std::uint64_t(s.vertices_after_preprocess)).num("tets", std::uint64_t(s.tets_after_preprocess));
   pre.num("degenerate_tets_after_shrink", std::uint64_t(s.degenerate_after_shrink));
+  pre.num("shrink_radius", s.shrink_radius).num("boundary_extent", s.boundary_extent);
   pre.str("shrink_point", to_string(r->center.coordinate(0)) + " " + to_string(r->center.coordinate(1)) + " " +
                               to_string(r->center.coordinate(2)));
   ex.num("simple", std::uint64_t(s.expansions_simple)).num("star_shapified", std::uint64_t(s.expansions_star_shapified));
@@ -257,13 +262,15 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   km.num("1", std::uint64_t(s.k_manifold[1])).num("2", std::uint64_t(s.k_manifold[2])).num("3", std::uint64_t(s.k_manifold[3]));
   km.num("other", std::uint64_t(s.k_manifold[0]));
   ex.obj("k_manifold", km);
-  ex.num("pushes", std::uint64_t(s.pushes)).num("inflation_splits", std::uint64_t(s.inflation_splits));
+  ex.num("bends", std::uint64_t(s.bends)).num("relaxations", std::uint64_t(s.relaxations)).num("pushes", std::uint64_t(s.pushes)).num("inflation_splits", std::uint64_t(s.inflation_splits));
+  ex.num("collapsed", std::uint64_t(s.collapsed));
   ex.num("lps", std::uint64_t(s.lps)).num("lps_certified", std::uint64_t(s.lps_certified));
   ex.num("lps_exact_fallback", std::uint64_t(s.lps_fell_back));
   out.num("vertices", std::uint64_t(s.output_vertices)).num("tets", std::uint64_t(s.output_tets));
   out.num("growth_ratio", s.growth_ratio);
   bits.num("max", std::uint64_t(s.max_bits)).num("mean", s.mean_bits);
   times.num("validate", s.seconds_validate).num("preprocess", s.seconds_preprocess).num("expand", s.seconds_expand);
+  times.num("collapse", s.seconds_collapse);
   times.num("verify", s.seconds_verify).num("total", s.seconds_total);
   filter.num("semi_static", std::uint64_t(s.filter.semi_static));
   filter.num("adaptive", std::uint64_t(s.filter.adaptive[0] + s.filter.adaptive[1] + s.filter.adaptive[2] + s.filter.adaptive[3]));

@@ -1,0 +1,22 @@
+#pragma once
+// Giving refinement back (paper Sec. 4.2.2, applied once the map is complete): every vertex the
+// method added (preprocessing splits, pushes, inflation) is collapsed into a neighbour when the
+// collapse keeps the map valid: the link condition holds (the mesh stays a ball) and every tet
+// that the collapse rewrites is strictly positive in the source and in the target, exactly.
+// Added vertices are interior, so the boundary is untouched. The collapsed vertices are removed
+// and the remaining added vertices renumbered; input vertices keep their ids.
+#include <cstddef>
+
+#include "algorithm/embedding.hpp"
+
+namespace cmx::algorithm {
+
+// Precondition: no cluster vertex left. `input_vertices`: the ids below it are never removed.
+// Returns the number of vertices removed.
+// Collapsed vertices are left without tets: compact_vertices removes them.
+std::size_t collapse_added_vertices(Embedding& e, std::size_t input_vertices);
+
+// Drops added vertices (ids >= input_vertices) that lie in no tet and renumbers the rest in order.
+void compact_vertices(Embedding& e, std::size_t input_vertices);
+
+}  // namespace cmx::algorithm

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Runs `cmx map` on every case under ../shared/data (when present) and prints one table row per
+# case: status, wall time, time per input tet, growth, largest coordinate bits, double validity,
+# and the independent checker's verdict (../shared/tools/verify_tmap.py).
+# Usage: bench/map/shared_cases.sh [CMX_BINARY] [OUT_DIR] [extra cmx map options...]
+set -uo pipefail
+here=$(cd "$(dirname "$0")/../.." && pwd)
+cmx=${1:-$here/build/release/cli/cmx}
+out=${2:-/tmp/cmx-shared-cases}
+shift 2 2>/dev/null || shift $#
+extra=("$@")
+data=$here/../shared/data
+tools=$here/../shared/tools
+[ -d "$data" ] || { echo "no shared data at $data"; exit 0; }
+mkdir -p "$out"
+printf '| case | status | tets in | seconds | s / input tet | growth | max bits | double valid | verify_tmap |\n'
+printf '|---|---|---|---|---|---|---|---|---|\n'
+run_case() {  # name domain boundary-option boundary-path
+  local name=$1 domain=$2 opt=$3 bnd=$4
+  local report=$out/$name.json
+  rm -f "$out/$name.tmap" "$report"
+  "$cmx" map "$domain" "$opt" "$bnd" -o "$out/$name" --report "$report" --quiet "${extra[@]}" >/dev/null 2>"$out/$name.err"
+  local rc=$?
+  local status tets secs growth bits dv check
+  status=$(python3 -c "import json;print(json.load(open('$report'))['status'])" 2>/dev/null || echo "rc=$rc")
+  if [ "$status" = success ]; then
+    read -r tets secs growth bits dv < <(python3 - "$report" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+print(r['input']['tets'], round(r['seconds']['total'], 3), round(r['output']['growth_ratio'], 4), r['bits']['max'],
+      'yes' if r['verdict']['double_valid'] else 'no')
+PY
+)
+    local per; per=$(python3 -c "print('%.2e' % ($secs / $tets))")
+    check=$(python3 "$tools/verify_tmap.py" "$domain" "$bnd" "$out/$name.tmap" 2>&1 |
+            python3 -c "import json,sys;print('valid' if json.loads(sys.stdin.read())['valid'] else 'INVALID')" 2>/dev/null ||
+            echo error)
+    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "$status" "$tets" "$secs" "$per" "$growth" "$bits" "$dv" "$check"
+  else
+    printf '| %s | %s | | | | | | | %s |\n' "$name" "$status" "$(head -c 120 "$out/$name.err" | tr '\n|' '  ')"
+  fi
+}
+s=$data/shrink-and-expand
+run_case prism "$s/prism_domain.ovm" --boundary "$s/prism_ball_boundary.txt"
+run_case notch "$s/notch_domain.ovm" --boundary "$s/notch_stiff_tet_boundary.txt"
+run_case thingi10k_83715 "$s/thingi10k_83715_domain.ovm" --boundary "$s/thingi10k_83715_tet_boundary.txt"
+run_case thingi10k_81152 "$s/thingi10k_81152_domain.ovm" --boundary "$s/thingi10k_81152_random_star_boundary.txt"
+for g in example cub_rockerarm291 tlc_polycube_bird tgs_100349; do
+  run_case "gm_$g" "$data/galaxy-maps/${g}_object.vtk" --codomain "$data/galaxy-maps/${g}_parameter.vtk"
+done
+for p in "$data"/public/P*; do
+  d=$(ls "$p"/domain.* | head -1)
+  run_case "$(basename "$p")" "$d" --boundary "$p/boundary.txt"
+done

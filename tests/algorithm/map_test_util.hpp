@@ -1,0 +1,73 @@
+#pragma once
+// Mapping problems built from the project's own generators (no data written by others): domains
+// from algorithm/domain_generators.hpp or TetGen balls, boundaries from the four generated shapes.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "algorithm/boundary_shapes.hpp"
+#include "algorithm/domain_generators.hpp"
+#include "algorithm/map.hpp"
+#include "arith/rational.hpp"
+#include "arith/rounding.hpp"
+#include "topology/complex_queries.hpp"
+
+namespace cmx::test {
+
+inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh, const std::vector<algorithm::Point3>& source,
+                                          const std::vector<std::array<double, 3>>& source_doubles,
+                                          const std::string& shape) {
+  const auto spec = algorithm::parse_boundary_shape(shape);
+  REQUIRE(spec);
+  const algorithm::GeneratedBoundary b = algorithm::generate_boundary(mesh, source_doubles, *spec);
+  REQUIRE_MESSAGE(b.ok, b.message);
+  algorithm::MapProblem p;
+  for (topology::TetId t : mesh.live_tets()) p.tets.push_back(mesh.tet(t));
+  p.source = source;
+  p.boundary_vertices = b.vertices;
+  for (const auto& q : b.positions)
+    p.boundary_positions.push_back({rational_from_double(q[0]), rational_from_double(q[1]), rational_from_double(q[2])});
+  return p;
+}
+
+inline algorithm::MapProblem problem_from(const algorithm::GeneratedDomain& d, const std::string& shape) {
+  return problem_from(d.mesh, d.positions, d.double_positions(), shape);
+}
+
+inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh, const std::vector<std::array<double, 3>>& pos,
+                                          const std::string& shape) {
+  std::vector<algorithm::Point3> exact;
+  for (const auto& q : pos) exact.push_back({rational_from_double(q[0]), rational_from_double(q[1]), rational_from_double(q[2])});
+  return problem_from(mesh, exact, pos, shape);
+}
+
+// The mesh's own boundary positions as the prescribed boundary (a trivially valid problem when
+// the domain is star-shaped around its kernel).
+inline algorithm::MapProblem identity_problem(const algorithm::GeneratedDomain& d) {
+  algorithm::MapProblem p;
+  for (topology::TetId t : d.mesh.live_tets()) p.tets.push_back(d.mesh.tet(t));
+  p.source = d.positions;
+  const std::vector<char> on_boundary = topology::boundary_vertex_flags(d.mesh);
+  for (std::uint32_t v = 0; v < on_boundary.size(); ++v)
+    if (on_boundary[v]) {
+      p.boundary_vertices.push_back(v);
+      p.boundary_positions.push_back(d.positions[v]);
+    }
+  return p;
+}
+
+// Maps with every invariant asserted after every step and checks the verdict.
+inline algorithm::MapResult map_checked(const algorithm::MapProblem& p, algorithm::MapOptions options = {}) {
+  options.check = true;
+  algorithm::MapResult r = algorithm::map_to_domain(p, options);
+  REQUIRE_MESSAGE(r.outcome == algorithm::MapOutcome::success, r.message);
+  CHECK_MESSAGE(r.verification.ok(), r.verification.first_failure);
+  CHECK(r.verification.target_positive);
+  CHECK(r.verification.source_positive);
+  CHECK(r.verification.boundary_refines);
+  return r;
+}
+
+}  // namespace cmx::test

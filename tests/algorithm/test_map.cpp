@@ -1,0 +1,156 @@
+// The mapping method end to end on the project's own meshes, every invariant asserted after every
+// step (MapOptions::check), each result verified exactly on the independent code path.
+#include <doctest/doctest.h>
+
+#include "algorithm/map.hpp"
+#include "algorithm/verify_map.hpp"
+#include "map_test_util.hpp"
+#include "topology/generators.hpp"
+
+#ifdef CMX_HAVE_TETGEN_BALL
+#include "support/tetgen_ball.hpp"
+#endif
+
+using namespace cmx;
+using namespace cmx::algorithm;
+using cmx::test::map_checked;
+using cmx::test::problem_from;
+
+namespace {
+
+const char* const shapes[] = {"tet", "stiff-tet", "sphere", "star:3"};
+
+}  // namespace
+
+TEST_CASE("a grid mapped onto its own boundary: the identity problem is solved and verified") {
+  const GeneratedDomain d = perturbed_grid(3, 3, 3, 5);
+  const MapResult r = map_checked(cmx::test::identity_problem(d));
+  CHECK(r.stats.input_interior_vertices == 8);
+  CHECK(r.stats.output_vertices >= r.stats.input_vertices);
+}
+
+TEST_CASE("perturbed grids onto the four generated boundary shapes") {
+  const GeneratedDomain d = perturbed_grid(4, 3, 3, 11);
+  for (const char* shape : shapes) {
+    CAPTURE(shape);
+    const MapResult r = map_checked(problem_from(d, shape));
+    CHECK(r.stats.expansions_simple + r.stats.expansions_star_shapified + r.stats.expansions_inflated +
+              r.stats.expansions_automatic >=
+          r.stats.input_interior_vertices);
+  }
+}
+
+TEST_CASE("voxel balls onto the four generated boundary shapes") {
+  const GeneratedDomain d = voxel_ball(3, 2);
+  for (const char* shape : shapes) {
+    CAPTURE(shape);
+    map_checked(problem_from(d, shape));
+  }
+}
+
+TEST_CASE("thin slabs, where most tets touch the boundary, onto the generated shapes") {
+  const GeneratedDomain one = thin_slab(5, 4, 3, 1);  // one layer: no interior vertex at all
+  const GeneratedDomain two = thin_slab(5, 4, 3, 2);
+  for (const char* shape : shapes) {
+    CAPTURE(shape);
+    map_checked(problem_from(one, shape));
+    map_checked(problem_from(two, shape));
+  }
+}
+
+#ifdef CMX_HAVE_TETGEN_BALL
+TEST_CASE("Delaunay balls built through TetGen's library onto the generated shapes") {
+  const test::TetgenBall ball = test::tetgen_ball(60, 40, 9);
+  for (const char* shape : shapes) {
+    CAPTURE(shape);
+    map_checked(problem_from(ball.mesh, ball.positions, shape));
+  }
+}
+#endif
+
+TEST_CASE("the result is the same across runs and across expansion orders it is asked for") {
+  const MapProblem p = problem_from(voxel_ball(2, 4), "star:8");
+  const MapResult a = map_to_domain(p), b = map_to_domain(p);
+  REQUIRE(a.outcome == MapOutcome::success);
+  CHECK(a.tets == b.tets);
+  CHECK(a.target == b.target);
+  CHECK(a.source == b.source);
+  for (const char* order : {"index", "random:5"}) {
+    CAPTURE(order);
+    MapOptions o;
+    o.order = *topology::parse_expansion_order(order);
+    map_checked(p, o);
+  }
+}
+
+TEST_CASE("every precision policy, LP backend and filter gives a verified map") {
+  const MapProblem p = problem_from(perturbed_grid(3, 3, 2, 3), "sphere");
+  for (const char* precision : {"none", "dyadic", "shift", "segment"}) {
+    CAPTURE(precision);
+    MapOptions o;
+    o.placement.precision = *parse_precision_policy(precision);
+    map_checked(p, o);
+  }
+  for (const char* filter : {"exact", "interval", "mpfr:200"}) {
+    CAPTURE(filter);
+    MapOptions o;
+    o.filter = *parse_filter_policy(filter);
+    map_checked(p, o);
+  }
+  MapOptions o;
+  o.placement.lp.backend = "exact";
+  map_checked(p, o);
+  o = {};
+  o.placement.lp.norm = lp::Norm::l1;
+  map_checked(p, o);
+}
+
+TEST_CASE("without the final collapses every added vertex is kept, and the map is still valid") {
+  const MapProblem p = problem_from(thin_slab(4, 4, 1, 1), "tet");
+  MapOptions o;
+  o.collapse = false;
+  const MapResult kept = map_checked(p, o);
+  const MapResult collapsed = map_checked(p);
+  CHECK(collapsed.stats.output_vertices <= kept.stats.output_vertices);
+  CHECK(collapsed.stats.collapsed == kept.stats.output_vertices - collapsed.stats.output_vertices);
+}
+
+TEST_CASE("the independent verifier rejects a broken map") {
+  const MapProblem p = problem_from(perturbed_grid(2, 2, 2, 1), "tet");
+  MapResult r = map_to_domain(p);
+  REQUIRE(r.outcome == MapOutcome::success);
+  std::vector<HPoint> source;
+  for (const auto& q : p.source) source.emplace_back(q[0], q[1], q[2]);
+  std::vector<HPoint> prescribed;
+  for (const auto& q : p.boundary_positions) prescribed.emplace_back(q[0], q[1], q[2]);
+  const VerificationInput in{&p.tets, &source, &p.boundary_vertices, &prescribed};
+  CHECK(verify_map(in, r.tets, r.source, r.target).ok());
+  // Swapping two vertices of one tet inverts it.
+  auto tets = r.tets;
+  std::swap(tets[0][0], tets[0][1]);
+  const MapVerification inverted = verify_map(in, tets, r.source, r.target);
+  CHECK_FALSE(inverted.ok());
+  CHECK_FALSE(inverted.target_positive);
+  CHECK(inverted.inverted >= 1);
+  // A boundary vertex moved off its prescribed position.
+  auto target = r.target;
+  target[p.boundary_vertices[0]] = HPoint(Rational(1000), Rational(0), Rational(0));
+  const MapVerification moved = verify_map(in, r.tets, r.source, target);
+  CHECK_FALSE(moved.ok());
+  CHECK_FALSE(moved.input_kept);
+}
+
+TEST_CASE("double coordinates are checked with exact predicates") {
+  const MapProblem p = problem_from(perturbed_grid(3, 2, 2, 2), "sphere");
+  const MapResult r = map_to_domain(p);
+  REQUIRE(r.outcome == MapOutcome::success);
+  std::vector<std::array<double, 3>> d;
+  for (const HPoint& q : r.target) d.push_back(q.approx());
+  const DoubleCheck ok = check_doubles(r.tets, d);
+  CHECK(ok.inverted + ok.degenerate <= r.tets.size());
+  // Collapsing every vertex onto one point makes every tet degenerate.
+  std::vector<std::array<double, 3>> flat(d.size(), {0.0, 0.0, 0.0});
+  const DoubleCheck bad = check_doubles(r.tets, flat);
+  CHECK(bad.degenerate == r.tets.size());
+  CHECK_FALSE(bad.valid());
+}

@@ -1,0 +1,154 @@
+// cmx map, run as a program: outputs, report, exit codes, no partial output on failure, and the
+// independent checker of ../shared/tools (written apart from the project) when it is present.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "run_cmx.hpp"
+
+using cmx::test::run_cmx;
+using cmx::test::run_program;
+using cmx::test::write_temp_file;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string fresh_dir() {
+  const std::string base = write_temp_file("", "");
+  fs::remove(base);
+  fs::create_directories(base);
+  return base;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A generated mesh file (by cmx itself) and its star-shaped boundary file.
+struct Case {
+  std::string dir, mesh, boundary;
+};
+
+Case make_case(const std::string& shape_arg, const std::string& boundary_shape) {
+  Case c;
+  c.dir = fresh_dir();
+  c.mesh = c.dir + "/domain.vtk";
+  c.boundary = c.dir + "/boundary.txt";
+  REQUIRE(run_cmx({"generate-mesh", "--shape", shape_arg, "--perturb", "3", "-o", c.mesh}).exit_code == 0);
+  REQUIRE(run_cmx({"boundary", c.mesh, "--shape", boundary_shape, "-o", c.boundary}).exit_code == 0);
+  return c;
+}
+
+bool have_checker() { return fs::exists(fs::path(CMX_SHARED_DIR) / "tools" / "verify_tmap.py"); }
+
+// The independent checker's verdict on an exact map (true when it says valid).
+bool independent_check(const Case& c, const std::string& tmap) {
+  const auto r = run_program("/usr/bin/env", {"python3", std::string(CMX_SHARED_DIR) + "/tools/verify_tmap.py", c.mesh,
+                                              c.boundary, tmap});
+  INFO(r.out << r.err);
+  return r.exit_code == 0 && r.out.find("\"valid\": true") != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("cmx map writes the exact map and the display formats, and reports a verified success") {
+  const Case c = make_case("ball:2", "star:4");
+  const std::string out = c.dir + "/out";
+  const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", out + ".vtu", "--format", "ovm,vtk,mesh",
+                          "--report", c.dir + "/report.json", "--check"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("map: success, verified exactly") != std::string::npos);
+  for (const char* ext : {".tmap", ".vtu", ".ovm", ".vtk", ".mesh"}) {
+    CAPTURE(ext);
+    CHECK(fs::file_size(out + ext) > 0);
+  }
+  const std::string report = slurp(c.dir + "/report.json");
+  CHECK(report.find("\"status\": \"success\"") != std::string::npos);
+  CHECK(report.find("\"exact_valid\": true") != std::string::npos);
+  CHECK(report.find("\"growth_ratio\"") != std::string::npos);
+  // The exact map reads back (every tet checked positive in source and target by the reader).
+  CHECK(run_cmx({"info", out + ".ovm"}).exit_code == 0);
+  if (have_checker()) CHECK(independent_check(c, out + ".tmap"));
+  else MESSAGE("skipped the independent checker: no ../shared/tools");
+}
+
+TEST_CASE("cmx map --shape generates the boundary itself, and reruns give identical bytes") {
+  const Case c = make_case("grid:3,3,2", "tet");
+  const std::string a = c.dir + "/a", b = c.dir + "/b";
+  REQUIRE(run_cmx({"map", c.mesh, "--shape", "stiff-tet", "-o", a, "--quiet"}).exit_code == 0);
+  REQUIRE(run_cmx({"map", c.mesh, "--shape", "stiff-tet", "-o", b, "--quiet"}).exit_code == 0);
+  CHECK(slurp(a + ".tmap") == slurp(b + ".tmap"));
+  CHECK(slurp(a + ".tmap").rfind("tmap 1\n", 0) == 0);
+}
+
+TEST_CASE("cmx map takes the boundary from a codomain mesh with the same connectivity") {
+  const Case c = make_case("grid:2,2,2", "tet");
+  // The domain itself as codomain: its boundary positions are the prescribed ones.
+  const auto r = run_cmx({"map", c.mesh, "--codomain", c.mesh, "-o", c.dir + "/out", "--quiet"});
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(fs::exists(c.dir + "/out.tmap"));
+}
+
+TEST_CASE("cmx map: a boundary that is not star-shaped exits 5, writes nothing and names a triangle") {
+  const Case c = make_case("grid:2,2,2", "tet");
+  // Grid vertex 22 is the centre of the top face of the 3x3x3 vertex grid: pull it far down.
+  std::istringstream in(slurp(c.boundary));
+  std::string text, line;
+  while (std::getline(in, line)) text += (line.rfind("22 ", 0) == 0 ? std::string("22 0 0 -50") : line) + "\n";
+  const std::string bad = write_temp_file(text);
+  const std::string out = c.dir + "/never";
+  const auto r = run_cmx({"map", c.mesh, "--boundary", bad, "-o", out, "--report", c.dir + "/r.json"});
+  CHECK(r.exit_code == 5);
+  CHECK(r.err.find("not star-shaped") != std::string::npos);
+  CHECK(r.err.find("boundary triangle") != std::string::npos);
+  CHECK_FALSE(fs::exists(out + ".tmap"));
+  CHECK(slurp(c.dir + "/r.json").find("\"status\": \"not_star_shaped\"") != std::string::npos);
+}
+
+TEST_CASE("cmx map: wrong boundary vertex set, non-ball mesh, bad numbers and bad options") {
+  const Case c = make_case("grid:2,2,2", "tet");
+  const std::string out = c.dir + "/never";
+  // A boundary file without its last line: a vertex lacks its position (exit 4).
+  std::string text = slurp(c.boundary);
+  text.erase(text.rfind('\n', text.size() - 2) + 1);
+  auto r = run_cmx({"map", c.mesh, "--boundary", write_temp_file(text), "-o", out});
+  CHECK(r.exit_code == 4);
+  CHECK(r.err.find("boundary vertex") != std::string::npos);
+  // NaN in the boundary file: a malformed file (exit 3) naming the line.
+  r = run_cmx({"map", c.mesh, "--boundary", write_temp_file("0 nan 0 0\n"), "-o", out});
+  CHECK(r.exit_code == 3);
+  CHECK(r.err.find(":1:") != std::string::npos);
+  // Two tets sharing only a vertex: not a ball (exit 4).
+  const std::string bowtie = write_temp_file(
+      "# vtk DataFile Version 4.2\nbowtie\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 7 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1 -1 0 0 0 -1 0 0 0 -1\nCELLS 2 10\n4 0 1 2 3\n4 0 5 4 6\nCELL_TYPES 2\n10 10\n",
+      ".vtk");
+  r = run_cmx({"map", bowtie, "--shape", "tet", "-o", out});
+  CHECK(r.exit_code == 4);
+  CHECK_FALSE(fs::exists(out + ".tmap"));
+  // Usage errors exit 2.
+  CHECK(run_cmx({"map", c.mesh}).exit_code == 2);
+  CHECK(run_cmx({"map", c.mesh, "--boundary", c.boundary, "--shape", "tet"}).exit_code == 2);
+  CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--precision", "fast"}).exit_code == 2);
+  CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--filter", "naive"}).exit_code == 2);
+  CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--format", "stl"}).exit_code == 2);
+  CHECK(run_cmx({"map", "--help"}).exit_code == 0);
+}
+
+TEST_CASE("cmx map: the time limit exits 6 and leaves no output, an existing output untouched") {
+  const Case c = make_case("ball:3", "star:1");
+  const std::string out = c.dir + "/kept";
+  std::ofstream(out + ".tmap") << "old content\n";
+  const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", out, "--time-limit", "1e-9"});
+  CHECK(r.exit_code == 6);
+  CHECK(slurp(out + ".tmap") == "old content\n");
+}
