@@ -64,8 +64,20 @@ class ClusterExpander {
       if (auto stop = check_limits()) return *stop;
       report_progress(false);
       const std::optional<Entry> next = pop();
-      if (!next) return stuck();
+      if (!next) {
+        // Every candidate failed: one more round in which refinement may also push dangling
+        // leaves and inflate around cut vertices (heavier, and prone to chains of refinement, so
+        // only when nothing else is left).
+        if (aggressive_ || failures_ == 0) return stuck();
+        aggressive_ = true;
+        for (VertexId v = 0; v < e_.num_vertices(); ++v)
+          if (e_.unexpanded[v]) dirty(v);
+        flush_dirty();
+        continue;
+      }
+      const std::size_t before = cluster_;
       handle(*next);
+      if (cluster_ < before) aggressive_ = false;
       flush_dirty();
     }
     report_progress(true);
@@ -180,8 +192,15 @@ class ClusterExpander {
         kind = Kind::inflate;
       } else {
         Placement p = place(cone, nullptr);
-        kind = p.ok() ? Kind::simple : Kind::star_shapify;
-        if (p.ok()) cached_[v] = std::move(p);
+        if (p.ok()) {
+          kind = Kind::simple;
+          cached_[v] = std::move(p);
+        } else {
+          // Bases that are not discs (pinched, dangling edges) come after every disc: their
+          // refinement is heavier (paper Sec. 4.1.2: star-shapification before inflation).
+          kind = topology::expanded_link_cut_vertices(e_.mesh, v, e_.unexpanded).empty() ? Kind::star_shapify
+                                                                                         : Kind::inflate;
+        }
       }
     }
     queue_.push({key(kind, st.manifold_k, st.expanded_neighbors, v), version_[v], v, kind,
@@ -282,7 +301,10 @@ class ClusterExpander {
       if (try_simple(v, st.manifold_k)) return true;
     }
     if (bend_and_expand(v, st.manifold_k)) return true;
-    return star_shapify(v, st.manifold_k, depth, false);
+    if (star_shapify(v, st.manifold_k, depth, false)) return true;
+    if (!aggressive_ || depth > 0) return false;
+    if (star_shapify(v, st.manifold_k, depth, true)) return true;
+    return paper_inflate(v, depth) && (!e_.unexpanded[v] || try_simple(v, st.manifold_k));
   }
 
   bool try_simple(VertexId v, int k) {
@@ -722,6 +744,89 @@ class ClusterExpander {
     return progress;
   }
 
+  bool legacy_pushes(VertexId v, int k) {
+    Base base = base_of(v);
+    if (base.triangles.empty()) return false;
+    VertexId w = base.verts.front();
+    for (VertexId x : base.verts)
+      if (base.tets[x] > base.tets[w]) w = x;
+    std::array<VertexId, 3> keep{};
+    for (const auto& tri : base.triangles)
+      if (std::find(tri.begin(), tri.end(), w) != tri.end()) {
+        keep = tri;
+        break;
+      }
+    for (;;) {
+      const Placement p = place(gather_expansion_cone(e_, v), &w);
+      if (p.ok()) {
+        expand_to(v, p.position, k);
+        ++stats_.expansions_star_shapified;
+        return true;
+      }
+      base = base_of(v);
+      std::unordered_map<VertexId, int> dist;
+      std::deque<VertexId> q{w};
+      dist[w] = 0;
+      while (!q.empty()) {
+        const VertexId x = q.front();
+        q.pop_front();
+        for (VertexId y : base.adj[x])
+          if (!dist.count(y)) dist[y] = dist[x] + 1, q.push_back(y);
+      }
+      std::optional<VertexId> best;
+      std::tuple<int, int, VertexId> best_key{};
+      for (VertexId b : base.verts) {
+        if (std::find(keep.begin(), keep.end(), b) != keep.end() || base.tets[b] == 0 || !pushable(v, b)) continue;
+        const std::tuple<int, int, VertexId> key{-(dist.count(b) ? dist[b] : 1 << 20), base.tets[b], b};
+        if (!best || key < best_key) best = b, best_key = key;
+      }
+      if (!best) return false;
+      push(v, *best);
+      ++stats_.pushes;
+      if (check_limits()) return false;
+    }
+  }
+
+  bool paper_inflate(VertexId v, int depth) {
+    if (depth + 1 >= max_depth || ++inflations_[v] > 4) return false;
+    std::vector<VertexId> added;
+    for (VertexId b : topology::expanded_link_cut_vertices(e_.mesh, v, e_.unexpanded)) {
+      std::vector<VertexId> cs;
+      for (TetId t : topology::tets_around_edge(e_.mesh, v, b))
+        for (VertexId c : e_.mesh.tet(t))
+          if (c != v && e_.unexpanded[c]) cs.push_back(c);
+      std::sort(cs.begin(), cs.end());
+      cs.erase(std::unique(cs.begin(), cs.end()), cs.end());
+      for (VertexId c : cs) {
+        added.push_back(push(c, b));
+        ++stats_.inflation_splits;
+      }
+    }
+    if (added.empty()) return false;
+    for (bool progress = true; progress && !added.empty();) {
+      progress = false;
+      for (auto it = added.begin(); it != added.end();) {
+        if (!e_.unexpanded[*it] || legacy_isolate(*it)) {
+          it = added.erase(it);
+          progress = true;
+        } else {
+          ++it;
+        }
+      }
+    }
+    dirty(v);
+    if (added.empty()) ++stats_.expansions_inflated;
+    return added.empty();
+  }
+
+  bool legacy_isolate(VertexId x) {
+    const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, x, e_.unexpanded, ws_);
+    if (!st.expandable) return false;
+    if (try_simple(x, st.manifold_k)) return true;
+    if (!topology::expanded_link_cut_vertices(e_.mesh, x, e_.unexpanded).empty()) return false;
+    return legacy_pushes(x, st.manifold_k);
+  }
+
   Embedding& e_;
   const ExpansionSettings& s_;
   MapStatistics& stats_;
@@ -733,6 +838,7 @@ class ClusterExpander {
   std::vector<VertexId> dirty_;
   std::unordered_map<VertexId, int> inflations_, relaxed_moves_;
   std::size_t cluster_ = 0, expanded_ = 0, failures_ = 0, max_bits_ = 0;
+  bool aggressive_ = false;
   std::chrono::steady_clock::time_point last_report_{};
 };
 
