@@ -7,6 +7,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "algorithm/cone_base.hpp"
 #include "algorithm/expansion_cone.hpp"
 #include "algorithm/invariants.hpp"
 #include "algorithm/map_error.hpp"
@@ -36,14 +37,6 @@ std::uint64_t splitmix(std::uint64_t x) {
   x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
   return x ^ (x >> 31);
 }
-
-// The expanded neighbours of a cluster vertex v: the cone base Lk°(v).
-struct Base {
-  std::vector<VertexId> verts;
-  std::unordered_map<VertexId, std::vector<VertexId>> adj;  // base edges
-  std::unordered_map<VertexId, int> tets;                   // base triangles at each vertex
-  std::vector<std::array<VertexId, 3>> triangles;
-};
 
 // Depth of local refinement: a star-shapification or inflation expands the vertices it pushes
 // right away, refining them in turn up to this depth; deeper, they go back to the queue.
@@ -296,7 +289,7 @@ class ClusterExpander {
     if (!st.expandable) return false;
     if (try_simple(v, st.manifold_k)) return true;
     if (depth == 0 && relax_base(v) && try_simple(v, st.manifold_k)) return true;
-    if (has_dangling_edge(base_of(v))) {
+    if (has_dangling_edge(cone_base(e_, v))) {
       if (!inflate(v, depth) || !e_.unexpanded[v]) return !e_.unexpanded[v];
       if (try_simple(v, st.manifold_k)) return true;
     }
@@ -325,7 +318,7 @@ class ClusterExpander {
   // twice (moves dirty their neighbours, which must not become an endless exchange).
   bool relax_base(VertexId v) {
     bool moved = false;
-    for (VertexId b : base_of(v).verts) {
+    for (VertexId b : cone_base(e_, v).verts) {
       if (e_.boundary[b] || relaxed_moves_[b] >= 2) continue;
       ++relaxed_moves_[b];
       const Placement p = place(gather_expansion_cone(e_, b), nullptr);
@@ -350,107 +343,8 @@ class ClusterExpander {
   // only when they succeed, then v is expanded, then the pushed vertices, last first, each now
   // between v and its base vertex.
 
-  Base base_of(VertexId v) const {
-    Base b;
-    for (TetId t : e_.mesh.tets_of(v)) {
-      std::array<VertexId, 3> ex{};
-      int n = 0;
-      for (VertexId w : e_.mesh.tet(t))
-        if (w != v && !e_.unexpanded[w]) ex[n++] = w;
-      for (int i = 0; i < n; ++i) {
-        b.verts.push_back(ex[i]);
-        for (int j = 0; j < n; ++j)
-          if (i != j) b.adj[ex[i]].push_back(ex[j]);
-      }
-      if (n == 3) {
-        b.triangles.push_back(ex);
-        for (VertexId w : ex) ++b.tets[w];
-      }
-    }
-    std::sort(b.verts.begin(), b.verts.end());
-    b.verts.erase(std::unique(b.verts.begin(), b.verts.end()), b.verts.end());
-    return b;
-  }
-
-  static bool has_dangling_edge(const Base& base) {
-    std::vector<std::pair<VertexId, VertexId>> in_triangle;
-    for (const auto& t : base.triangles)
-      for (int i = 0; i < 3; ++i) in_triangle.emplace_back(std::min(t[i], t[(i + 1) % 3]), std::max(t[i], t[(i + 1) % 3]));
-    std::sort(in_triangle.begin(), in_triangle.end());
-    for (const auto& [a, nbrs] : base.adj)
-      for (VertexId b : nbrs)
-        if (!std::binary_search(in_triangle.begin(), in_triangle.end(), std::make_pair(std::min(a, b), std::max(a, b))))
-          return true;
-    return false;
-  }
-
-  // The ring around spoke (v, b): pairs of vertices of the tets containing both.
-  std::vector<std::pair<VertexId, VertexId>> spoke_ring(VertexId v, VertexId b) const {
-    std::vector<std::pair<VertexId, VertexId>> ring;
-    for (TetId t : topology::tets_around_edge(e_.mesh, v, b)) {
-      VertexId xy[2];
-      int n = 0;
-      for (VertexId w : e_.mesh.tet(t))
-        if (w != v && w != b) xy[n++] = w;
-      ring.emplace_back(xy[0], xy[1]);
-    }
-    return ring;
-  }
-
-  // b's neighbours in Lk(v) are one run of cluster vertices and one run of expanded vertices:
-  // pushing b keeps Eq. (1) for v (chi(Lk•(v)) changes by 1 - runs).
-  bool pushable(VertexId v, VertexId b) const {
-    std::vector<VertexId> seen;
-    int cluster_edges = 0;
-    for (const auto& [x, y] : spoke_ring(v, b)) {
-      seen.push_back(x);
-      seen.push_back(y);
-      if (e_.unexpanded[x] && e_.unexpanded[y]) ++cluster_edges;
-    }
-    std::sort(seen.begin(), seen.end());
-    seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-    int in_cluster = 0, expanded = 0;
-    for (VertexId w : seen) (e_.unexpanded[w] ? in_cluster : expanded) += 1;
-    return in_cluster >= 1 && expanded >= 1 && in_cluster - cluster_edges == 1;
-  }
-
-  // b is an ear of v's base disc: removing b's triangles leaves a disc (b's expanded neighbours
-  // in Lk(v) form an arc of at least two vertices whose inner vertices have no cluster neighbour
-  // in Lk(v); for an arc of two, their edge lies in a second base triangle).
-  bool is_ear(VertexId v, VertexId b) const {
-    const auto ring = spoke_ring(v, b);
-    std::vector<VertexId> expanded;
-    for (const auto& [x, y] : ring)
-      for (VertexId z : {x, y})
-        if (!e_.unexpanded[z]) expanded.push_back(z);
-    std::sort(expanded.begin(), expanded.end());
-    std::vector<VertexId> inner;  // arc vertices met twice and without a cluster ring neighbour
-    for (std::size_t i = 0; i < expanded.size(); ++i) {
-      if (i > 0 && expanded[i] == expanded[i - 1]) continue;
-      const bool twice = i + 1 < expanded.size() && expanded[i + 1] == expanded[i];
-      bool next_to_cluster = false;
-      for (const auto& [x, y] : ring)
-        if ((x == expanded[i] && e_.unexpanded[y]) || (y == expanded[i] && e_.unexpanded[x])) next_to_cluster = true;
-      if (twice && !next_to_cluster) inner.push_back(expanded[i]);
-    }
-    expanded.erase(std::unique(expanded.begin(), expanded.end()), expanded.end());
-    if (expanded.size() < 2) return false;
-    for (VertexId c : inner)
-      for (TetId t : e_.mesh.tets_of(c))
-        if (topology::contains(e_.mesh.tet(t), v))
-          for (VertexId z : e_.mesh.tet(t))
-            if (z != v && e_.unexpanded[z]) return false;
-    if (expanded.size() == 2) {
-      int base_triangles = 0;
-      for (TetId t : topology::tets_around_edge(e_.mesh, expanded[0], expanded[1]))
-        if (topology::contains(e_.mesh.tet(t), v) && e_.unexpanded_count(e_.mesh.tet(t)) == 1) ++base_triangles;
-      return base_triangles == 2;
-    }
-    return true;
-  }
-
   bool star_shapify(VertexId v, int k, int depth, bool leaves) {
-    Base base = base_of(v);
+    ConeBase base = cone_base(e_, v);
     if (base.triangles.empty()) return false;
     // Witness: the base vertex in most base triangles; kept: one base triangle through it.
     VertexId w = base.verts.front();
@@ -473,7 +367,7 @@ class ClusterExpander {
     for (;;) {
       p = place(gather_expansion_cone(e_, v), &w);
       if (p.ok()) break;
-      base = base_of(v);
+      base = cone_base(e_, v);
       const std::optional<VertexId> b = choose_push(v, w, keep, base, leaves);
       if (!b) {
         undo_virtual();
@@ -509,54 +403,8 @@ class ClusterExpander {
   // Bends are computed on a virtual state (b moved to b's position, which is exactly v's star
   // after the real split) and made only when v's cone has interior.
 
-  // The cone of the vertex a bend of spoke (v, b) creates, in the current (virtual) state.
-  ExpansionCone bend_cone(VertexId v, VertexId b) const {
-    ExpansionCone cone;
-    for (TetId t : topology::tets_around_edge(e_.mesh, v, b)) {
-      const topology::Tet& tet = e_.mesh.tet(t);
-      const int cluster = e_.unexpanded_count(tet);  // v included
-      // The piece with b' in place of v: b' must see the face opposite v from inside.
-      if (cluster - 1 <= 1) add_face(cone, tet, topology::local_index(tet, v), cluster - 1 == 0);
-      // The piece with b' in place of b, v at p_c: a constraint when v is its only cluster vertex.
-      if (cluster == 1) add_face(cone, tet, topology::local_index(tet, b), false);
-    }
-    return cone;
-  }
-
-  void add_face(ExpansionCone& cone, const topology::Tet& tet, int i, bool base) const {
-    const topology::Triangle f = topology::tet_face(tet, i);
-    InnerHalfSpace h = inner_halfspace(e_.target[f[0]], e_.target[f[1]], e_.target[f[2]]);
-    if (h.is_degenerate()) cone.degenerate = true;
-    (base ? cone.base_tets : cone.side_tets) += 1;
-    cone.halfspaces.push_back(std::move(h));
-  }
-
-  // Constraints on the bent position q of b for v's side tets through b to show `aim`: the face
-  // opposite v with q in b's place must have aim strictly on its inner side.
-  // With `one`, only the first constraint the current position violates.
-  void add_aim_constraints(ExpansionCone& cone, VertexId v, VertexId b, const HPoint& aim, bool one) const {
-    for (TetId t : topology::tets_around_edge(e_.mesh, v, b)) {
-      const topology::Tet& tet = e_.mesh.tet(t);
-      if (e_.unexpanded_count(tet) != 2) continue;
-      if (one) {
-        const topology::Triangle f0 = topology::tet_face(tet, topology::local_index(tet, v));
-        const InnerHalfSpace now = inner_halfspace(e_.target[f0[0]], e_.target[f0[1]], e_.target[f0[2]]);
-        if (!now.is_degenerate() && side_of(now, aim) == Sign::negative) continue;
-      }
-      // orient(f with q) < 0 at aim  <=>  orient(f with aim in q's slot, q) > 0 (one transposition)
-      topology::Triangle f = topology::tet_face(tet, topology::local_index(tet, v));
-      HPoint g[3] = {e_.target[f[0]], e_.target[f[1]], e_.target[f[2]]};
-      for (int i = 0; i < 3; ++i)
-        if (f[i] == b) g[i] = aim;
-      InnerHalfSpace h = inner_halfspace(g[0], g[2], g[1]);
-      if (h.is_degenerate()) cone.degenerate = true;
-      cone.halfspaces.push_back(std::move(h));
-      if (one) return;
-    }
-  }
-
   bool bend_and_expand(VertexId v, int k) {
-    Base base = base_of(v);
+    ConeBase base = cone_base(e_, v);
     if (base.triangles.empty() || has_dangling_edge(base)) return false;
     VertexId w = base.verts.front();
     for (VertexId x : base.verts)
@@ -596,8 +444,8 @@ class ClusterExpander {
       for (int level = 0; level < 3 && !q; ++level)
         for (const auto& [count, x] : bl) {
           if (bent[x] >= 2) continue;
-          ExpansionCone cone = bend_cone(v, x);
-          if (level < 2) add_aim_constraints(cone, v, x, aim, level == 1);
+          ExpansionCone cone = bend_cone(e_, v, x);
+          if (level < 2) add_aim_constraints(cone, e_, v, x, aim, level == 1);
           const Placement r = place(cone, nullptr);
           if (!r.ok()) continue;
           q = r.position;
@@ -633,32 +481,16 @@ class ClusterExpander {
   // Expanded endpoints of v's side constraints that hide `aim`, most often first.
   std::vector<std::pair<int, VertexId>> blockers(VertexId v, const HPoint& aim) const {
     std::vector<std::pair<int, VertexId>> out;
-    for (const auto& [x, count] : blocking_endpoints(v, aim)) out.emplace_back(-count, x);
+    for (const auto& [x, count] : blocking_endpoints(e_, v, aim)) out.emplace_back(-count, x);
     std::sort(out.begin(), out.end());
     return out;
-  }
-
-  // Side constraints of v that the direction toward `aim` violates, counted per expanded
-  // endpoint: the planes through p_c and a base boundary edge that keep v from moving that way.
-  std::unordered_map<VertexId, int> blocking_endpoints(VertexId v, const HPoint& aim) const {
-    std::unordered_map<VertexId, int> count;
-    for (TetId t : e_.mesh.tets_of(v)) {
-      const topology::Tet& tet = e_.mesh.tet(t);
-      if (e_.unexpanded_count(tet) != 2) continue;
-      const topology::Triangle f = topology::tet_face(tet, topology::local_index(tet, v));
-      const InnerHalfSpace h = inner_halfspace(e_.target[f[0]], e_.target[f[1]], e_.target[f[2]]);
-      if (!h.is_degenerate() && side_of(h, aim) == Sign::negative) continue;
-      for (VertexId x : f)
-        if (!e_.unexpanded[x]) ++count[x];
-    }
-    return count;
   }
 
   // Ears first (the base stays a disc), then vertices blocking the direction toward the kept
   // triangle most often, then the farthest from the witness in base edges, then the fewest base
   // triangles. Only vertices on a base triangle: a pushed vertex then has a base of two fans over
   // an arc of at least two vertices rather than a bare path, which would need inflation in turn.
-  std::optional<VertexId> choose_push(VertexId v, VertexId w, const std::array<VertexId, 3>& keep, Base& base,
+  std::optional<VertexId> choose_push(VertexId v, VertexId w, const std::array<VertexId, 3>& keep, ConeBase& base,
                                       bool leaves) const {
     std::unordered_map<VertexId, int> dist;
     std::deque<VertexId> q{w};
@@ -674,13 +506,13 @@ class ClusterExpander {
     }
     const HPoint corners[3] = {e_.target[keep[0]], e_.target[keep[1]], e_.target[keep[2]]};
     const Rational third(1, 3), thirds[3] = {third, third, third};
-    std::unordered_map<VertexId, int> blocks = blocking_endpoints(v, convex_combination(corners, thirds, 3));
+    std::unordered_map<VertexId, int> blocks = blocking_endpoints(e_, v, convex_combination(corners, thirds, 3));
     std::optional<VertexId> best;
     std::tuple<int, int, int, int, VertexId> best_key{};
     for (VertexId b : base.verts) {
-      if (std::find(keep.begin(), keep.end(), b) != keep.end() || (base.tets[b] == 0 && !leaves) || !pushable(v, b))
+      if (std::find(keep.begin(), keep.end(), b) != keep.end() || (base.tets[b] == 0 && !leaves) || !is_pushable(e_, v, b))
         continue;
-      const std::tuple<int, int, int, int, VertexId> key{is_ear(v, b) ? 0 : 1, -blocks[b],
+      const std::tuple<int, int, int, int, VertexId> key{is_ear(e_, v, b) ? 0 : 1, -blocks[b],
                                                          -(dist.count(b) ? dist[b] : 1 << 20), base.tets[b], b};
       if (!best || key < best_key) {
         best = b;
@@ -699,32 +531,10 @@ class ClusterExpander {
   // restores the mesh exactly: inflation never leaves refinement behind without progress.
   // Attempts per vertex are bounded; the refinement budget bounds the total.
 
-  // Base edges of v in no base triangle, with the cluster vertices of their two Lk(v) triangles.
-  std::vector<std::array<VertexId, 4>> dangling_edges(VertexId v) const {
-    const Base base = base_of(v);
-    std::vector<std::array<VertexId, 4>> out;
-    for (const auto& [a, nbrs] : base.adj)
-      for (VertexId b : nbrs) {
-        if (a > b) continue;
-        std::vector<VertexId> sides;
-        bool in_triangle = false;
-        for (TetId t : topology::tets_around_edge(e_.mesh, v, a))
-          if (topology::contains(e_.mesh.tet(t), b))
-            for (VertexId z : e_.mesh.tet(t))
-              if (z != v && z != a && z != b) {
-                if (e_.unexpanded[z]) sides.push_back(z);
-                else in_triangle = true;
-              }
-        if (!in_triangle && !sides.empty()) out.push_back({a, b, sides[0], sides.size() > 1 ? sides[1] : sides[0]});
-      }
-    std::sort(out.begin(), out.end());
-    return out;
-  }
-
   bool inflate(VertexId v, int depth) {
     if (depth + 1 >= max_depth || ++inflations_[v] > 4) return false;
     bool progress = false;
-    for (const auto& [a, b, u1, u2] : dangling_edges(v)) {
+    for (const auto& [a, b, u1, u2] : dangling_edges(e_, v)) {
       if (!e_.unexpanded[v]) break;
       if (!e_.unexpanded[u1] || !e_.unexpanded[u2]) continue;  // changed by an earlier inflation
       for (const auto& [end, u] : {std::pair{b, u1}, std::pair{a, u1}, std::pair{b, u2}, std::pair{a, u2}}) {
@@ -742,49 +552,6 @@ class ClusterExpander {
     dirty(v);
     if (progress) ++stats_.expansions_inflated;
     return progress;
-  }
-
-  bool legacy_pushes(VertexId v, int k) {
-    Base base = base_of(v);
-    if (base.triangles.empty()) return false;
-    VertexId w = base.verts.front();
-    for (VertexId x : base.verts)
-      if (base.tets[x] > base.tets[w]) w = x;
-    std::array<VertexId, 3> keep{};
-    for (const auto& tri : base.triangles)
-      if (std::find(tri.begin(), tri.end(), w) != tri.end()) {
-        keep = tri;
-        break;
-      }
-    for (;;) {
-      const Placement p = place(gather_expansion_cone(e_, v), &w);
-      if (p.ok()) {
-        expand_to(v, p.position, k);
-        ++stats_.expansions_star_shapified;
-        return true;
-      }
-      base = base_of(v);
-      std::unordered_map<VertexId, int> dist;
-      std::deque<VertexId> q{w};
-      dist[w] = 0;
-      while (!q.empty()) {
-        const VertexId x = q.front();
-        q.pop_front();
-        for (VertexId y : base.adj[x])
-          if (!dist.count(y)) dist[y] = dist[x] + 1, q.push_back(y);
-      }
-      std::optional<VertexId> best;
-      std::tuple<int, int, VertexId> best_key{};
-      for (VertexId b : base.verts) {
-        if (std::find(keep.begin(), keep.end(), b) != keep.end() || base.tets[b] == 0 || !pushable(v, b)) continue;
-        const std::tuple<int, int, VertexId> key{-(dist.count(b) ? dist[b] : 1 << 20), base.tets[b], b};
-        if (!best || key < best_key) best = b, best_key = key;
-      }
-      if (!best) return false;
-      push(v, *best);
-      ++stats_.pushes;
-      if (check_limits()) return false;
-    }
   }
 
   bool paper_inflate(VertexId v, int depth) {
@@ -806,7 +573,7 @@ class ClusterExpander {
     for (bool progress = true; progress && !added.empty();) {
       progress = false;
       for (auto it = added.begin(); it != added.end();) {
-        if (!e_.unexpanded[*it] || legacy_isolate(*it)) {
+        if (!e_.unexpanded[*it] || isolate(*it)) {
           it = added.erase(it);
           progress = true;
         } else {
@@ -819,12 +586,12 @@ class ClusterExpander {
     return added.empty();
   }
 
-  bool legacy_isolate(VertexId x) {
+  bool isolate(VertexId x) {
     const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, x, e_.unexpanded, ws_);
     if (!st.expandable) return false;
     if (try_simple(x, st.manifold_k)) return true;
     if (!topology::expanded_link_cut_vertices(e_.mesh, x, e_.unexpanded).empty()) return false;
-    return legacy_pushes(x, st.manifold_k);
+    return star_shapify(x, st.manifold_k, max_depth, false);
   }
 
   Embedding& e_;
