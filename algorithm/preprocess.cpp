@@ -8,6 +8,7 @@
 #include "algorithm/map_error.hpp"
 #include "arith/rounding.hpp"
 #include "lp/few_bit_point.hpp"
+#include "topology/chords.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
 
@@ -48,214 +49,35 @@ class Preprocessor {
     return result_;
   }
 
-  // --- combinatorial helpers ---------------------------------------------------------------
+  // --- combinatorial helpers (the chord machinery lives in topology/chords.hpp) ---------------
 
   bool is_boundary_face(const Triangle& f) const {
     return topology::tets_around_face(e_.mesh, f[0], f[1], f[2]).size() == 1;
   }
-  bool all_boundary(const Triangle& f) const {
-    return e_.boundary[f[0]] && e_.boundary[f[1]] && e_.boundary[f[2]];
-  }
-  // Interior face with its three vertices on the boundary.
-  bool is_chord_face(const Triangle& f) const { return all_boundary(f) && !is_boundary_face(f); }
-  // Interior edge between two boundary vertices.
-  bool is_chord_edge(VertexId a, VertexId b) const {
-    if (!e_.boundary[a] || !e_.boundary[b]) return false;
-    const auto around = topology::tets_around_edge(e_.mesh, a, b);
-    if (around.empty()) return false;
-    for (TetId t : around) {
-      const auto& tet = e_.mesh.tet(t);
-      for (int i = 0; i < 4; ++i) {
-        if (tet[i] == a || tet[i] == b) continue;
-        if (is_boundary_face(topology::tet_face(tet, i))) return false;
-      }
-    }
-    return true;
-  }
-  // The vertices of the link of edge ab (the cycle around it).
-  std::vector<VertexId> edge_cycle(VertexId a, VertexId b) const {
-    std::vector<VertexId> out;
-    for (TetId t : topology::tets_around_edge(e_.mesh, a, b))
-      for (VertexId w : e_.mesh.tet(t))
-        if (w != a && w != b) out.push_back(w);
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-    return out;
-  }
-  // Number of maximal runs of interior vertices along the cycle around edge ab (0 when none; 0
-  // too when the whole cycle is interior, reported through `all_interior`).
+  bool is_chord_edge(VertexId a, VertexId b) const { return topology::is_chord_edge(e_.mesh, e_.boundary, a, b); }
   int interior_runs(VertexId a, VertexId b, bool& all_interior) const {
-    int verts = 0, edges = 0, total = 0;
-    for (VertexId w : edge_cycle(a, b)) {
-      ++total;
-      verts += e_.unexpanded[w] ? 1 : 0;
-    }
-    for (TetId t : topology::tets_around_edge(e_.mesh, a, b)) {
-      VertexId xy[2];
-      int n = 0;
-      for (VertexId w : e_.mesh.tet(t))
-        if (w != a && w != b) xy[n++] = w;
-      if (e_.unexpanded[xy[0]] && e_.unexpanded[xy[1]]) ++edges;
-    }
-    all_interior = verts == total;
-    return all_interior ? 0 : verts - edges;
+    return topology::interior_runs(e_.mesh, e_.unexpanded, a, b, all_interior);
   }
-
   VertexId split_face(const Triangle& f) { return e_.split_face(f[0], f[1], f[2], HPoint(), true); }
   VertexId split_edge(VertexId a, VertexId b) { return e_.split_edge(a, b, HPoint(), true); }
 
-  bool cluster_simply_connected() const {
-    const auto c = topology::cluster_mesh_counts(e_.mesh, e_.unexpanded);
-    return c.vertices == 0 || (c.components == 1 && c.euler == 1);
+  topology::ChordContext chords() {
+    return {e_.mesh, e_.boundary, e_.unexpanded, [this](VertexId a, VertexId b, VertexId c) {
+              return c == topology::invalid_index ? split_edge(a, b) : split_face({a, b, c});
+            }};
   }
-
-  // --- topology: the cluster mesh must be simply connected ----------------------------------
-  // The cluster mesh is homotopy equivalent to the ball minus the full subcomplex on the boundary
-  // vertices, i.e. minus the chord faces and chord edges. Chord faces whose two sides hold
-  // interior vertices of different cluster components separate them; chord edges whose cycle is
-  // entirely interior are the axes of handles. Splitting exactly those (docs/DESIGN.md) is
-  // usually far less than splitting every chord.
-
-  // Joins the cluster components through the fewest chord faces (0-1 BFS over tets).
+  bool cluster_simply_connected() const { return topology::interior_simply_connected(e_.mesh, e_.unexpanded); }
   void connect_cluster() {
-    for (int round = 0; round < 100000; ++round) {
-      const auto counts = topology::cluster_mesh_counts(e_.mesh, e_.unexpanded);
-      if (counts.components <= 1) return;
-      const std::vector<Triangle> path = chord_path_between_components();
-      if (path.empty()) return;  // cannot connect: the fallback splits every chord
-      for (const Triangle& f : path) {
-        // Both tets at f contain each edge of f: splitting a chord edge of f joins them too, and
-        // removes the chord (the predecessor splits every chord edge anyway).
-        if (topology::tets_around_face(e_.mesh, f[0], f[1], f[2]).empty()) continue;  // split already
-        int edge = -1;
-        for (int i = 0; i < 3 && edge < 0; ++i)
-          if (is_chord_edge(f[i], f[(i + 1) % 3])) edge = i;
-        if (edge >= 0) split_edge(f[edge], f[(edge + 1) % 3]);
-        else split_face(f);
-        ++result_.split_topology;
-      }
-    }
+    auto c = chords();
+    result_.split_topology += topology::connect_interior(c);
   }
-
-  // Chord faces on a shortest path (counting chord faces) from the cluster component of the
-  // first interior vertex to a tet of another component.
-  std::vector<Triangle> chord_path_between_components() const {
-    const std::size_t n = e_.num_vertices();
-    std::vector<VertexId> parent(n);
-    std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](VertexId x) {
-      while (parent[x] != x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
-    VertexId first = topology::invalid_index;
-    for (TetId t : e_.mesh.live_tets()) {
-      const auto& tet = e_.mesh.tet(t);
-      VertexId prev = topology::invalid_index;
-      for (VertexId w : tet)
-        if (e_.unexpanded[w]) {
-          if (first == topology::invalid_index) first = w;
-          if (prev != topology::invalid_index) parent[find(w)] = find(prev);
-          prev = w;
-        }
-    }
-    if (first == topology::invalid_index) return {};
-    const VertexId root = find(first);
-    auto component = [&](TetId t) -> VertexId {
-      for (VertexId w : e_.mesh.tet(t))
-        if (e_.unexpanded[w]) return find(w);
-      return topology::invalid_index;
-    };
-    const topology::TetAdjacency adj = topology::tet_adjacency(e_.mesh);
-    const std::size_t cap = e_.mesh.tet_capacity();
-    std::vector<std::uint32_t> dist(cap, UINT32_MAX);
-    std::vector<std::pair<TetId, int>> from(cap, {topology::invalid_index, -1});
-    std::deque<TetId> q;
-    for (TetId t : e_.mesh.live_tets())
-      if (component(t) == root) {
-        dist[t] = 0;
-        q.push_back(t);
-      }
-    while (!q.empty()) {
-      const TetId t = q.front();
-      q.pop_front();
-      const VertexId c = component(t);
-      if (c != topology::invalid_index && c != root) return trace(t, from);
-      for (int i = 0; i < 4; ++i) {
-        const TetId u = adj.neighbor[t][i];
-        if (u == topology::invalid_index) continue;
-        const Triangle f = topology::tet_face(e_.mesh.tet(t), i);
-        const std::uint32_t w = all_boundary(f) ? 1 : 0;
-        if (dist[t] + w >= dist[u]) continue;
-        dist[u] = dist[t] + w;
-        from[u] = {t, i};
-        if (w) q.push_back(u);
-        else q.push_front(u);
-      }
-    }
-    return {};
-  }
-
-  std::vector<Triangle> trace(TetId t, const std::vector<std::pair<TetId, int>>& from) const {
-    std::vector<Triangle> faces;
-    while (from[t].first != topology::invalid_index) {
-      const auto [prev, i] = from[t];
-      const Triangle f = topology::tet_face(e_.mesh.tet(prev), i);
-      if (all_boundary(f)) faces.push_back(f);
-      t = prev;
-    }
-    return faces;
-  }
-
-  // Splits every chord edge whose cycle is entirely interior: each removes one handle.
   void fill_cluster_holes() {
-    std::set<std::pair<VertexId, VertexId>> chords;
-    for (TetId t : e_.mesh.live_tets()) {
-      const auto& tet = e_.mesh.tet(t);
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j)
-          if (e_.boundary[tet[i]] && e_.boundary[tet[j]])
-            chords.insert({std::min(tet[i], tet[j]), std::max(tet[i], tet[j])});
-    }
-    for (const auto& [a, b] : chords) {
-      if (!is_chord_edge(a, b)) continue;
-      bool all_interior = false;
-      interior_runs(a, b, all_interior);
-      if (!all_interior) continue;
-      split_edge(a, b);
-      ++result_.split_topology;
-    }
+    auto c = chords();
+    result_.split_topology += topology::fill_interior_handles(c);
   }
-
-  // The predecessor's preprocessing, the fallback: every chord face with three boundary edges,
-  // then every chord edge. Afterwards no interior simplex has all its vertices on the boundary.
   void split_all_chords() {
-    std::set<Triangle> faces;
-    for (TetId t : e_.mesh.live_tets())
-      for (int i = 0; i < 4; ++i) {
-        Triangle f = topology::tet_face(e_.mesh.tet(t), i);
-        if (!is_chord_face(f)) continue;
-        std::sort(f.begin(), f.end());
-        faces.insert(f);
-      }
-    for (const Triangle& f : faces)
-      if (!topology::tets_around_face(e_.mesh, f[0], f[1], f[2]).empty() && !is_chord_edge(f[0], f[1]) &&
-          !is_chord_edge(f[1], f[2]) && !is_chord_edge(f[0], f[2])) {
-        split_face(f);
-        ++result_.split_fallback;
-      }
-    std::set<std::pair<VertexId, VertexId>> chords;
-    for (TetId t : e_.mesh.live_tets()) {
-      const auto& tet = e_.mesh.tet(t);
-      for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j)
-          if (e_.boundary[tet[i]] && e_.boundary[tet[j]])
-            chords.insert({std::min(tet[i], tet[j]), std::max(tet[i], tet[j])});
-    }
-    for (const auto& [a, b] : chords)
-      if (is_chord_edge(a, b)) {
-        split_edge(a, b);
-        ++result_.split_fallback;
-      }
+    auto c = chords();
+    result_.split_fallback += topology::split_all_chords(c);
   }
 
   // --- geometry: the shrink point ----------------------------------------------------------

@@ -24,6 +24,9 @@
 #include "io/io_error.hpp"
 #include "io/read_mesh.hpp"
 #include "topology/ball_check.hpp"
+#include "topology/chords.hpp"
+#include "topology/complex_queries.hpp"
+#include "topology/mesh_edits.hpp"
 #include "topology/generators.hpp"
 #include "topology/nobuenoss.hpp"
 #include "topology/topological_expansion.hpp"
@@ -34,7 +37,7 @@ namespace {
 using topology::TetMesh;
 
 constexpr const char* usage =
-    "usage: cmx topo-expand (MESH | --builtin NAME) [--order ORDER] [--json]\n"
+    "usage: cmx topo-expand (MESH | --builtin NAME) [--order ORDER] [--raw] [--json]\n"
     "Topological expansion (paper Sec. 5.1): expands the cluster mesh of the interior vertices\n"
     "greedily by Eq. (1) alone (no geometry) and reports the sequence length, the expansions by\n"
     "kind (k-manifold k = 1, 2, 3, other Eq. (1), automatic), whether it got stuck, and when stuck\n"
@@ -46,6 +49,9 @@ constexpr const char* usage =
     "                  grid:NX,NY,NZ (Freudenthal grid of NX*NY*NZ cells, 6 tets each)\n"
     "  --order ORDER   priority (default: k = 1, 2, 3, other; then more expanded neighbours;\n"
     "                  then lower id), index (lowest id), random:SEED (seeded permutation)\n"
+    "  --raw           skip the chord splits that first make the interior mesh simply connected\n"
+    "                  (by default chords are split as cmx map does: only those that disconnect\n"
+    "                  the interior or are axes of its handles, then every chord if needed)\n"
     "  --json          one JSON object on stdout\n"
     "Exit status: 0 when the expansion ran, stuck or not (stuck is a result, not an error);\n"
     "2 bad command line; 3 unreadable or malformed MESH; 4 MESH is not a ball.\n";
@@ -56,7 +62,23 @@ constexpr std::uint64_t max_builtin_tets = 100'000'000;
 struct Input {
   TetMesh mesh;
   std::string source;  // the path, or "builtin:NAME"
+  std::size_t chord_splits = 0;
 };
+
+// The chord splits of topology/chords.hpp on the mesh itself, as cmx map's preprocessing does.
+std::vector<char> simply_connected_interior(Input& in) {
+  std::vector<char> boundary = topology::boundary_vertex_flags(in.mesh);
+  std::vector<char> interior = topology::interior_vertex_flags(in.mesh);
+  topology::ChordContext c{in.mesh, boundary, interior, [&](topology::VertexId a, topology::VertexId b, topology::VertexId f) {
+                             const topology::SplitResult r = f == topology::invalid_index ? topology::split_edge(in.mesh, a, b)
+                                                                                          : topology::split_face(in.mesh, a, b, f);
+                             boundary.push_back(0);
+                             interior.push_back(1);
+                             return r.new_vertex;
+                           }};
+  in.chord_splits = topology::make_interior_simply_connected(c);
+  return interior;
+}
 
 // "NX,NY,NZ" with each a positive decimal; nullopt when malformed or too large.
 std::optional<std::array<std::uint32_t, 3>> parse_grid_size(const std::string& text) {
@@ -118,7 +140,8 @@ void print_report(const Input& in, const topology::ExpansionOrder& order, const 
   if (json) {
     std::printf("{\"source\": %s, \"vertices\": %zu, \"tets\": %zu, \"order\": %s,\n", json_escaped(in.source).c_str(),
                 in.mesh.num_vertices(), in.mesh.num_tets(), json_escaped(order_name).c_str());
-    std::printf(" \"initial_cluster_vertices\": %zu, \"sequence_length\": %zu,\n", r.initial_cluster_vertices, r.length());
+    std::printf(" \"chord_splits\": %zu, \"initial_cluster_vertices\": %zu, \"sequence_length\": %zu,\n", in.chord_splits,
+                r.initial_cluster_vertices, r.length());
     std::printf(" \"k_manifold\": {\"1\": %zu, \"2\": %zu, \"3\": %zu, \"other\": %zu}, \"automatic\": %zu,\n", k[1], k[2], k[3],
                 k[0], r.automatic);
     std::printf(" \"stuck\": %s, \"remaining_vertices\": %zu, \"remaining_euler\": %lld, \"remaining_components\": %zu,\n",
@@ -128,6 +151,7 @@ void print_report(const Input& in, const topology::ExpansionOrder& order, const 
   }
   std::printf("mesh: %s (%zu vertices, %zu tets; a ball)\n", in.source.c_str(), in.mesh.num_vertices(), in.mesh.num_tets());
   std::printf("order: %s\n", order_name.c_str());
+  std::printf("chord splits (to make the interior simply connected): %zu\n", in.chord_splits);
   std::printf("initial cluster vertices: %zu\n", r.initial_cluster_vertices);
   std::printf("sequence length: %zu\n", r.length());
   std::printf("expansions by kind: 1-manifold %zu, 2-manifold %zu, 3-manifold %zu, other Eq.(1) %zu, automatic %zu\n", k[1], k[2],
@@ -142,7 +166,7 @@ void print_report(const Input& in, const topology::ExpansionOrder& order, const 
 
 int run(const std::vector<std::string>& args) {
   std::string path, builtin, order_text = "priority";
-  bool json = false;
+  bool json = false, raw = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     // "--name VALUE" or "--name=VALUE"
@@ -165,6 +189,8 @@ int run(const std::vector<std::string>& args) {
     }
     if (a == "--json") {
       json = true;
+    } else if (a == "--raw") {
+      raw = true;
     } else if (const auto got = value_of("--order", order_text)) {
       if (!*got) return exit_usage;
     } else if (const auto got_builtin = value_of("--builtin", builtin)) {
@@ -212,8 +238,9 @@ int run(const std::vector<std::string>& args) {
     std::fprintf(stderr, "cmx topo-expand: %s is not a ball: %s\n", in.source.c_str(), ball.message.c_str());
     return exit_invalid_problem;
   }
+  const std::vector<char> interior = raw ? std::vector<char>{} : simply_connected_interior(in);
   const auto start = std::chrono::steady_clock::now();
-  const topology::TopologicalExpansionResult result = topology::topological_expansion(in.mesh, *order);
+  const topology::TopologicalExpansionResult result = topology::topological_expansion(in.mesh, *order, interior);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   print_report(in, *order, result, seconds, json);
   std::fflush(stdout);

@@ -18,6 +18,7 @@
 
 #include "io/read_mesh.hpp"
 #include "topology/ball_check.hpp"
+#include "topology/chords.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
 #include "topology/topological_expansion.hpp"
@@ -128,5 +129,27 @@ TEST_CASE("thingi10k_81152 is stuck on the cycles of its interior and completes 
     const TopologicalExpansionResult r = topological_expansion(m, *parse_expansion_order(order));
     CHECK_FALSE(r.stuck);
     CHECK(r.length() == c1.vertices);
+  }
+}
+
+TEST_CASE("after the chord splits of topology/chords.hpp topological expansion completes on every shared domain") {
+  if (!have_shared_data()) return;
+  for (const fs::path& path : shared_domains()) {
+    CAPTURE(path.string());
+    TetMesh m = read_domain(path);
+    std::vector<char> boundary = boundary_vertex_flags(m);
+    std::vector<char> interior = interior_vertex_flags(m);
+    ChordContext c{m, boundary, interior, [&](VertexId a, VertexId b, VertexId f) {
+                     const SplitResult r = f == invalid_index ? split_edge(m, a, b) : split_face(m, a, b, f);
+                     REQUIRE(r.ok);
+                     boundary.push_back(0);
+                     interior.push_back(1);
+                     return r.new_vertex;
+                   }};
+    (void)make_interior_simply_connected(c);
+    CHECK(interior_simply_connected(m, interior));
+    CHECK(check_ball(m).ok);
+    const TopologicalExpansionResult r = topological_expansion(m, ExpansionOrder{}, interior);
+    CHECK_FALSE(r.stuck);
   }
 }
