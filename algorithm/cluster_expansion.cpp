@@ -346,16 +346,7 @@ class ClusterExpander {
   bool star_shapify(VertexId v, int k, int depth, bool leaves) {
     ConeBase base = cone_base(e_, v);
     if (base.triangles.empty()) return false;
-    // Witness: the base vertex in most base triangles; kept: one base triangle through it.
-    VertexId w = base.verts.front();
-    for (VertexId x : base.verts)
-      if (base.tets[x] > base.tets[w]) w = x;
-    std::array<VertexId, 3> keep{};
-    for (const auto& tri : base.triangles)
-      if (std::find(tri.begin(), tri.end(), w) != tri.end()) {
-        keep = tri;
-        break;
-      }
+    const auto [w, keep] = choose_witness(base);
     std::vector<std::pair<VertexId, HPoint>> virtual_pushes;
     auto undo_virtual = [&] {
       for (auto it = virtual_pushes.rbegin(); it != virtual_pushes.rend(); ++it) {
@@ -406,18 +397,8 @@ class ClusterExpander {
   bool bend_and_expand(VertexId v, int k) {
     ConeBase base = cone_base(e_, v);
     if (base.triangles.empty() || has_dangling_edge(base)) return false;
-    VertexId w = base.verts.front();
-    for (VertexId x : base.verts)
-      if (base.tets[x] > base.tets[w]) w = x;
-    std::array<VertexId, 3> keep{};
-    for (const auto& tri : base.triangles)
-      if (std::find(tri.begin(), tri.end(), w) != tri.end()) {
-        keep = tri;
-        break;
-      }
-    const HPoint corners[3] = {e_.target[keep[0]], e_.target[keep[1]], e_.target[keep[2]]};
-    const Rational third(1, 3), thirds[3] = {third, third, third};
-    const HPoint aim = convex_combination(corners, thirds, 3);
+    const auto [w, keep] = choose_witness(base);
+    const HPoint aim = centroid(e_, keep);
 
     struct Bend {
       VertexId b;
@@ -504,9 +485,7 @@ class ClusterExpander {
           q.push_back(y);
         }
     }
-    const HPoint corners[3] = {e_.target[keep[0]], e_.target[keep[1]], e_.target[keep[2]]};
-    const Rational third(1, 3), thirds[3] = {third, third, third};
-    std::unordered_map<VertexId, int> blocks = blocking_endpoints(e_, v, convex_combination(corners, thirds, 3));
+    std::unordered_map<VertexId, int> blocks = blocking_endpoints(e_, v, centroid(e_, keep));
     std::optional<VertexId> best;
     std::tuple<int, int, int, int, VertexId> best_key{};
     for (VertexId b : base.verts) {

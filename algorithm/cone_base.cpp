@@ -29,6 +29,24 @@ ConeBase cone_base(const Embedding& e, VertexId v) {
   return b;
 }
 
+Witness choose_witness(const ConeBase& base) {
+  Witness w{base.verts.front(), {}};
+  for (VertexId x : base.verts)
+    if (base.tets.at(x) > base.tets.at(w.vertex)) w.vertex = x;
+  for (const auto& tri : base.triangles)
+    if (std::find(tri.begin(), tri.end(), w.vertex) != tri.end()) {
+      w.keep = tri;
+      break;
+    }
+  return w;
+}
+
+HPoint centroid(const Embedding& e, const std::array<VertexId, 3>& t) {
+  const HPoint corners[3] = {e.target[t[0]], e.target[t[1]], e.target[t[2]]};
+  const Rational third(1, 3), thirds[3] = {third, third, third};
+  return convex_combination(corners, thirds, 3);
+}
+
 bool has_dangling_edge(const ConeBase& base) {
   std::vector<std::pair<VertexId, VertexId>> in_triangle;
   for (const auto& t : base.triangles)

@@ -22,6 +22,17 @@ struct ConeBase {
 
 ConeBase cone_base(const Embedding& e, VertexId v);
 
+// The witness of star-shapification: the base vertex in most base triangles (smallest id among
+// equals), and one base triangle through it that refinement keeps. Precondition: a base triangle.
+struct Witness {
+  VertexId vertex;
+  std::array<VertexId, 3> keep;
+};
+Witness choose_witness(const ConeBase& base);
+
+// The centroid of a triangle of target positions: the aim point of star-shapification.
+HPoint centroid(const Embedding& e, const std::array<VertexId, 3>& t);
+
 // A base edge in no base triangle: its two Lk(v) triangles have cluster vertices, whose side
 // planes through p_c face each other and flatten the kernel.
 bool has_dangling_edge(const ConeBase& base);
