@@ -533,6 +533,44 @@ class ClusterExpander {
     return progress;
   }
 
+  // The last round's pushes for inflation's new vertices: real pushes one at a time, farthest from
+  // the witness first, kept even when the cone does not open (measured, on the case without
+  // interior vertices (P07) this partial progress is what lets the last round finish).
+  bool push_until_star_shaped(VertexId v, int k) {
+    ConeBase base = cone_base(e_, v);
+    if (base.triangles.empty()) return false;
+    const auto [w, keep] = choose_witness(base);
+    for (;;) {
+      const Placement p = place(gather_expansion_cone(e_, v), &w);
+      if (p.ok()) {
+        expand_to(v, p.position, k);
+        ++stats_.expansions_star_shapified;
+        return true;
+      }
+      base = cone_base(e_, v);
+      std::unordered_map<VertexId, int> dist;
+      std::deque<VertexId> q{w};
+      dist[w] = 0;
+      while (!q.empty()) {
+        const VertexId x = q.front();
+        q.pop_front();
+        for (VertexId y : base.adj[x])
+          if (!dist.count(y)) dist[y] = dist[x] + 1, q.push_back(y);
+      }
+      std::optional<VertexId> best;
+      std::tuple<int, int, VertexId> best_key{};
+      for (VertexId b : base.verts) {
+        if (std::find(keep.begin(), keep.end(), b) != keep.end() || base.tets[b] == 0 || !is_pushable(e_, v, b)) continue;
+        const std::tuple<int, int, VertexId> key{-(dist.count(b) ? dist[b] : 1 << 20), base.tets[b], b};
+        if (!best || key < best_key) best = b, best_key = key;
+      }
+      if (!best) return false;
+      push(v, *best);
+      ++stats_.pushes;
+      if (check_limits()) return false;
+    }
+  }
+
   bool paper_inflate(VertexId v, int depth) {
     if (depth + 1 >= max_depth || ++inflations_[v] > 4) return false;
     std::vector<VertexId> added;
@@ -570,7 +608,7 @@ class ClusterExpander {
     if (!st.expandable) return false;
     if (try_simple(x, st.manifold_k)) return true;
     if (!topology::expanded_link_cut_vertices(e_.mesh, x, e_.unexpanded).empty()) return false;
-    return star_shapify(x, st.manifold_k, max_depth, false);
+    return push_until_star_shaped(x, st.manifold_k);
   }
 
   Embedding& e_;

@@ -30,9 +30,13 @@ ConeBase cone_base(const Embedding& e, VertexId v) {
 }
 
 Witness choose_witness(const ConeBase& base) {
+  auto triangles_at = [&](VertexId x) {
+    const auto it = base.tets.find(x);
+    return it == base.tets.end() ? 0 : it->second;
+  };
   Witness w{base.verts.front(), {}};
   for (VertexId x : base.verts)
-    if (base.tets.at(x) > base.tets.at(w.vertex)) w.vertex = x;
+    if (triangles_at(x) > triangles_at(w.vertex)) w.vertex = x;
   for (const auto& tri : base.triangles)
     if (std::find(tri.begin(), tri.end(), w.vertex) != tri.end()) {
       w.keep = tri;
@@ -77,7 +81,6 @@ std::vector<std::array<VertexId, 4>> dangling_edges(const Embedding& e, VertexId
       if (!in_triangle && !sides.empty()) out.push_back({a, b, sides[0], sides.size() > 1 ? sides[1] : sides[0]});
     }
   std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 
