@@ -19,7 +19,7 @@ printf '|---|---|---|---|---|---|---|---|---|---|---|\n'
 for m in "${meshes[@]}"; do
   name=$(echo "$m" | tr ':,' '__')
   mesh=$out/$name.vtk
-  "$cmx" generate-mesh --shape "$m" --perturb 1 -o "$mesh" >/dev/null || { echo "| $m | generate-mesh failed |"; continue; }
+  "$cmx" generate-mesh --shape "$m" --perturb 1 -o "$mesh" >/dev/null 2>&1 || { echo "| $m | generate-mesh failed |"; continue; }
   for s in "${shapes[@]}"; do
     sname=$(echo "$s" | tr ':' '_')
     bnd=$out/${name}_$sname.txt

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs `cmx map` on every case under ../shared/data (when present) and prints one table row per
 # case: status, wall time, time per input tet, growth, largest coordinate bits, double validity,
-# and the independent checker's verdict (../shared/tools/verify_tmap.py).
+# whether a second run writes a bit-identical .tmap, and the independent checker's verdict
+# (../shared/tools/verify_tmap.py).
 # Usage: bench/map/shared_cases.sh [CMX_BINARY] [OUT_DIR] [extra cmx map options...]
 set -uo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -13,8 +14,8 @@ data=$here/../shared/data
 tools=$here/../shared/tools
 [ -d "$data" ] || { echo "no shared data at $data"; exit 0; }
 mkdir -p "$out"
-printf '| case | status | tets in | seconds | s / input tet | growth | max bits | double valid | verify_tmap |\n'
-printf '|---|---|---|---|---|---|---|---|---|\n'
+printf '| case | status | tets in | seconds | s / input tet | growth | max bits | double valid | identical rerun | verify_tmap |\n'
+printf '|---|---|---|---|---|---|---|---|---|---|\n'
 run_case() {  # name domain boundary-option boundary-path
   local name=$1 domain=$2 opt=$3 bnd=$4
   local report=$out/$name.json
@@ -31,13 +32,15 @@ print(r['input']['tets'], round(r['seconds']['total'], 3), round(r['output']['gr
       'yes' if r['verdict']['double_valid'] else 'no')
 PY
 )
+    "$cmx" map "$domain" "$opt" "$bnd" -o "$out/$name.again" --quiet "${extra[@]}" >/dev/null 2>&1
+    local same; same=$(cmp -s "$out/$name.tmap" "$out/$name.again.tmap" && echo yes || echo NO)
     local per; per=$(python3 -c "print('%.2e' % ($secs / $tets))")
     check=$(python3 "$tools/verify_tmap.py" "$domain" "$bnd" "$out/$name.tmap" 2>&1 |
             python3 -c "import json,sys;print('valid' if json.loads(sys.stdin.read())['valid'] else 'INVALID')" 2>/dev/null ||
             echo error)
-    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "$status" "$tets" "$secs" "$per" "$growth" "$bits" "$dv" "$check"
+    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "$status" "$tets" "$secs" "$per" "$growth" "$bits" "$dv" "$same" "$check"
   else
-    printf '| %s | %s | | | | | | | %s |\n' "$name" "$status" "$(head -c 120 "$out/$name.err" | tr '\n|' '  ')"
+    printf '| %s | %s | | | | | | | | %s |\n' "$name" "$status" "$(head -c 120 "$out/$name.err" | tr '\n|' '  ')"
   fi
 }
 s=$data/shrink-and-expand
