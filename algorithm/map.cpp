@@ -121,6 +121,16 @@ MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
     s.seconds_collapse = seconds_since(phase);
   }
   compact_vertices(e, s.input_vertices);  // vertices collapsed away, or inflation splits undone
+  if (out.outcome == MapOutcome::success) {
+    phase = Clock::now();
+    r.doubles = make_double_map(e, options.snap, options.placement);
+    s.chebyshev_moves = r.doubles.chebyshev_moves;
+    s.snap_exact_rounds = r.doubles.exact_rounds;
+    s.snap_repaired = r.doubles.repaired;
+    s.snap_rounds = r.doubles.rounds;
+    s.lps += r.doubles.lps;
+    s.seconds_double = seconds_since(phase);
+  }
   r.outcome = out.outcome;
   r.message = out.message;
 

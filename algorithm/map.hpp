@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithm/double_output.hpp"
 #include "algorithm/map_error.hpp"
 #include "algorithm/placement.hpp"
 #include "algorithm/verify_map.hpp"
@@ -45,6 +46,7 @@ struct MapOptions {
   double time_limit_seconds = 0;              // 0 = none
   bool check = false;                         // assert every invariant after every step (slow)
   bool collapse = true;                       // collapse added vertices when the map stays valid
+  SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/double_output.hpp)
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
 };
 
@@ -68,6 +70,9 @@ struct MapStatistics {
   std::size_t relaxations = 0;                // expanded vertices re-centred in their star's kernel
   std::size_t inflation_splits = 0;
   std::size_t collapsed = 0;                  // added vertices collapsed away at the end
+  // Double output.
+  std::size_t chebyshev_moves = 0;            // exact positions changed by the Chebyshev pass
+  std::size_t snap_exact_rounds = 0, snap_repaired = 0, snap_rounds = 0;
   std::size_t lps = 0, lps_certified = 0, lps_fell_back = 0;
   // Output.
   std::size_t output_vertices = 0, output_tets = 0;
@@ -76,7 +81,7 @@ struct MapStatistics {
   double mean_bits = 0;
   // Times (seconds).
   double seconds_validate = 0, seconds_preprocess = 0, seconds_expand = 0, seconds_collapse = 0, seconds_verify = 0,
-         seconds_total = 0;
+         seconds_double = 0, seconds_total = 0;
   FilterStats filter;
 };
 
@@ -91,6 +96,7 @@ struct MapResult {
   HPoint center;                              // the shrink point p_c
   MapStatistics stats;
   MapVerification verification;               // filled on success
+  DoubleMap doubles;                          // filled on success: the target as doubles, and their check
 };
 
 // Throws MapError for invalid problems (not a ball, boundary mismatch, degenerate or mirrored or

@@ -33,7 +33,7 @@ constexpr const char* usage =
     "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--time-limit S] [--check]\n"
     "               [--no-collapse] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
-    "               [--quiet]\n"
+    "               [--snap repair|chebyshev-pass|nearest|none] [--quiet]\n"
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
     "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
     "the verdict.\n"
@@ -43,7 +43,7 @@ constexpr const char* usage =
     "  -o OUT            output path; OUT's extension (if one of the formats) selects that format,\n"
     "                    otherwise OUT is a stem. The exact map OUT.tmap is always written.\n"
     "  --format LIST     more formats, comma-separated: tmap, vtu, ovm, vtk, mesh (display formats\n"
-    "                    carry the nearest doubles; the report says whether they are valid)\n"
+    "                    carry the doubles chosen by --snap; the report says whether they are valid)\n"
     "  --report R.json   statistics and verdicts as JSON\n"
     "  --time-limit S    stop after S seconds (exit 6)\n"
     "  --check           assert every invariant after every step (slow; for testing)\n"
@@ -55,6 +55,11 @@ constexpr const char* usage =
     "  --filter F        predicate arithmetic (default cascade; all but naive are exact)\n"
     "  --lp NAME         LP backend (default certified)\n"
     "  --norm NAME       Chebyshev row weights (default l2-upper)\n"
+    "  --snap POLICY     double output (default repair): repair = chebyshev-pass, then re-centre the\n"
+    "                    vertices of tets the doubles invert among their neighbours' doubles;\n"
+    "                    chebyshev-pass = move every interior vertex to the Chebyshev centre of its\n"
+    "                    star (exact map stays valid), then round; nearest = round and check;\n"
+    "                    none = round, no check\n"
     "  --quiet           no progress line, no verdict on stdout\n"
     "Exit codes: 0 mapped and verified; 2 bad command line; 3 unreadable or malformed input;\n"
     "4 not a valid problem (not a ball, boundary mismatch, degenerate or mirrored boundary);\n"
@@ -134,6 +139,11 @@ std::string parse_args(const std::vector<std::string>& args, Args& a) {
       if (!f) return why;
       if (f->kind == FilterPolicy::Kind::naive) return "--filter naive gives wrong signs; cmx map needs an exact policy";
       a.options.filter = *f;
+    } else if (x == "--snap") {
+      if (!value(v)) return "--snap needs a name";
+      const auto p = algorithm::parse_snap_policy(v);
+      if (!p) return "unknown snap policy '" + v + "' (repair, chebyshev-pass, nearest, none)";
+      a.options.snap = *p;
     } else if (x == "--lp") {
       if (!value(v)) return "--lp needs a name";
       if (!lp::find_backend(v)) return "unknown or unavailable LP backend '" + v + "'";
@@ -194,13 +204,6 @@ int exit_code_of(algorithm::MapErrorKind kind) {
   }
 }
 
-std::vector<std::array<double, 3>> nearest(const std::vector<HPoint>& points) {
-  std::vector<std::array<double, 3>> out;
-  out.reserve(points.size());
-  for (const HPoint& p : points) out.push_back({to_double(p.coordinate(0)), to_double(p.coordinate(1)), to_double(p.coordinate(2))});
-  return out;
-}
-
 std::vector<io::Point3> exact(const std::vector<HPoint>& points) {
   std::vector<io::Point3> out;
   out.reserve(points.size());
@@ -228,8 +231,7 @@ void write_outputs(const std::string& stem, const std::vector<std::string>& form
   }
 }
 
-JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::string& status, const std::string& message,
-                       bool double_valid, std::size_t double_inverted, std::size_t double_degenerate) {
+JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::string& status, const std::string& message) {
   JsonObject j;
   j.str("domain", a.domain);
   j.str("status", status);
@@ -240,6 +242,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   opt.str("filter", to_string(a.options.filter));
   opt.str("lp", a.options.placement.lp.backend);
   opt.str("norm", std::string(lp::to_string(a.options.placement.lp.norm)));
+  opt.str("snap", std::string(algorithm::to_string(a.options.snap)));
   opt.num("time_limit", a.time_limit);
   j.obj("options", opt);
   if (!r) return j;
@@ -270,7 +273,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   out.num("growth_ratio", s.growth_ratio);
   bits.num("max", std::uint64_t(s.max_bits)).num("mean", s.mean_bits);
   times.num("validate", s.seconds_validate).num("preprocess", s.seconds_preprocess).num("expand", s.seconds_expand);
-  times.num("collapse", s.seconds_collapse);
+  times.num("collapse", s.seconds_collapse).num("double", s.seconds_double);
   times.num("verify", s.seconds_verify).num("total", s.seconds_total);
   filter.num("semi_static", std::uint64_t(s.filter.semi_static));
   filter.num("adaptive", std::uint64_t(s.filter.adaptive[0] + s.filter.adaptive[1] + s.filter.adaptive[2] + s.filter.adaptive[3]));
@@ -281,9 +284,14 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   verdict.flag("exact_valid", success && v.ok()).flag("target_positive", v.target_positive);
   verdict.flag("source_positive", v.source_positive).flag("input_kept", v.input_kept).flag("ball", v.ball);
   verdict.flag("boundary_refines", v.boundary_refines);
-  verdict.flag("double_valid", double_valid).num("double_inverted", std::uint64_t(double_inverted));
-  verdict.num("double_degenerate", std::uint64_t(double_degenerate));
-  j.obj("input", in).obj("preprocess", pre).obj("expansion", ex).obj("output", out).obj("bits", bits);
+  const algorithm::DoubleMap& d = r->doubles;
+  const bool checked = success && d.checked;
+  verdict.flag("double_checked", checked).flag("double_valid", checked && d.check.valid());
+  verdict.num("double_inverted", std::uint64_t(d.check.inverted)).num("double_degenerate", std::uint64_t(d.check.degenerate));
+  JsonObject dbl;
+  dbl.num("chebyshev_moves", std::uint64_t(s.chebyshev_moves)).num("repaired", std::uint64_t(s.snap_repaired));
+  dbl.num("exact_repair_rounds", std::uint64_t(s.snap_exact_rounds)).num("double_repair_rounds", std::uint64_t(s.snap_rounds));
+  j.obj("input", in).obj("preprocess", pre).obj("expansion", ex).obj("double_output", dbl).obj("output", out).obj("bits", bits);
   j.obj("seconds", times).obj("predicates", filter).obj("verdict", verdict);
   return j;
 }
@@ -318,11 +326,11 @@ int run(const std::vector<std::string>& argv) {
     problem = load_map_problem(a.domain, a.boundary, a.codomain, a.shape, a.seed);
   } catch (const io::IoError& e) {
     std::fprintf(stderr, "cmx map: %s\n", e.what());
-    write_report(a.report, report_json(a, nullptr, "bad_input", e.what(), false, 0, 0));
+    write_report(a.report, report_json(a, nullptr, "bad_input", e.what()));
     return exit_bad_input;
   } catch (const algorithm::MapError& e) {
     std::fprintf(stderr, "cmx map: %s\n", e.what());
-    write_report(a.report, report_json(a, nullptr, algorithm::kind_name(e.kind()), e.what(), false, 0, 0));
+    write_report(a.report, report_json(a, nullptr, algorithm::kind_name(e.kind()), e.what()));
     return exit_code_of(e.kind());
   }
   const bool show_progress = !a.quiet && isatty(2);
@@ -333,24 +341,23 @@ int run(const std::vector<std::string>& argv) {
   } catch (const algorithm::MapError& e) {
     if (show_progress) std::fputc('\n', stderr);
     std::fprintf(stderr, "cmx map: %s\n", e.what());
-    write_report(a.report, report_json(a, nullptr, algorithm::kind_name(e.kind()), e.what(), false, 0, 0));
+    write_report(a.report, report_json(a, nullptr, algorithm::kind_name(e.kind()), e.what()));
     return exit_code_of(e.kind());
   }
   if (show_progress) std::fputc('\n', stderr);
   if (r.outcome != algorithm::MapOutcome::success) {
     std::fprintf(stderr, "cmx map: %s: %s\n", algorithm::to_string(r.outcome), r.message.c_str());
-    write_report(a.report, report_json(a, &r, algorithm::to_string(r.outcome), r.message, false, 0, 0));
+    write_report(a.report, report_json(a, &r, algorithm::to_string(r.outcome), r.message));
     return r.outcome == algorithm::MapOutcome::time_limit ? exit_time_limit : exit_stuck;
   }
-  const auto doubles = nearest(r.target);
-  const algorithm::DoubleCheck dc = algorithm::check_doubles(r.tets, doubles);
+  const algorithm::DoubleMap& dm = r.doubles;
   if (!a.out.empty()) {
     std::string stem;
     std::vector<std::string> formats;
     output_plan(a, stem, formats);
-    write_outputs(stem, formats, r, doubles);
+    write_outputs(stem, formats, r, dm.target);
   }
-  write_report(a.report, report_json(a, &r, "success", "", dc.valid(), dc.inverted, dc.degenerate));
+  write_report(a.report, report_json(a, &r, "success", ""));
   if (!a.quiet) {
     const auto& s = r.stats;
     std::printf("map: success, verified exactly (every tet positive in source and target, boundary as prescribed)\n");
@@ -359,8 +366,12 @@ int run(const std::vector<std::string>& argv) {
                 s.split_topology + s.split_all_boundary_tet + s.split_no_shrink_point + s.split_fallback);
     std::printf("  expansions: %zu simple, %zu star-shapified (%zu pushes), %zu inflated, %zu automatic\n",
                 s.expansions_simple, s.expansions_star_shapified, s.pushes, s.expansions_inflated, s.expansions_automatic);
-    std::printf("  largest coordinate: %zu bits; nearest doubles %s (%zu inverted, %zu degenerate)\n", s.max_bits,
-                dc.valid() ? "valid" : "NOT valid", dc.inverted, dc.degenerate);
+    if (dm.checked)
+      std::printf("  largest coordinate: %zu bits; doubles (--snap %s) %s (%zu inverted, %zu degenerate)\n", s.max_bits,
+                  std::string(algorithm::to_string(a.options.snap)).c_str(), dm.check.valid() ? "valid" : "NOT valid",
+                  dm.check.inverted, dm.check.degenerate);
+    else
+      std::printf("  largest coordinate: %zu bits; doubles not checked (--snap none)\n", s.max_bits);
     std::printf("  %.3f s\n", s.seconds_total);
   }
   return exit_ok;

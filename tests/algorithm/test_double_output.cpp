@@ -1,0 +1,142 @@
+// Double output (paper Sec. 4.2.7): every --snap policy on small generated cases, the doubles'
+// verdict recounted on a second code path (exact homogeneous orientation of the doubles), the
+// exact map still verified after the Chebyshev moves, and a crowded map that rounding breaks and
+// repair mends.
+#include <doctest/doctest.h>
+
+#include "algorithm/double_output.hpp"
+#include "algorithm/expansion_cone.hpp"
+#include "algorithm/map.hpp"
+#include "arith/rounding.hpp"
+#include "kernel/orient.hpp"
+#include "map_test_util.hpp"
+#include "topology/complex_queries.hpp"
+
+using namespace cmx;
+using namespace cmx::algorithm;
+using cmx::test::map_checked;
+using cmx::test::problem_from;
+
+namespace {
+
+const SnapPolicy policies[] = {SnapPolicy::none, SnapPolicy::nearest, SnapPolicy::chebyshev_pass,
+                               SnapPolicy::repair};
+
+// The doubles' verdict through HPoint and the exact-only filter (not the raw-double cascade).
+DoubleCheck recount(const std::vector<topology::Tet>& tets, const std::vector<std::array<double, 3>>& d) {
+  DoubleCheck c;
+  const FilterPolicy exact = *parse_filter_policy("exact");
+  for (const auto& t : tets) {
+    std::array<HPoint, 4> p;
+    for (int i = 0; i < 4; ++i) p[std::size_t(i)] = HPoint::from_doubles(d[t[i]][0], d[t[i]][1], d[t[i]][2]);
+    const Sign s = orient3d(p[0], p[1], p[2], p[3], exact);
+    if (s == Sign::negative) ++c.inverted;
+    if (s == Sign::zero) ++c.degenerate;
+  }
+  return c;
+}
+
+std::array<double, 3> nearest(const HPoint& p) {
+  return {to_double(p.coordinate(0)), to_double(p.coordinate(1)), to_double(p.coordinate(2))};
+}
+
+void check_double_map(const MapProblem& p, const MapResult& r, SnapPolicy policy) {
+  const DoubleMap& d = r.doubles;
+  REQUIRE(d.target.size() == r.target.size());
+  CHECK(d.checked == (policy != SnapPolicy::none));
+  // Boundary vertices keep the nearest doubles of their prescribed positions.
+  for (std::size_t i = 0; i < p.boundary_vertices.size(); ++i) {
+    const auto& q = p.boundary_positions[i];
+    const std::array<double, 3> want{to_double(q[0]), to_double(q[1]), to_double(q[2])};
+    CHECK(d.target[p.boundary_vertices[i]] == want);
+  }
+  if (policy == SnapPolicy::none || policy == SnapPolicy::nearest || policy == SnapPolicy::chebyshev_pass)
+    for (std::size_t v = 0; v < r.target.size(); ++v) CHECK(d.target[v] == nearest(r.target[v]));
+  if (d.checked) {
+    const DoubleCheck again = recount(r.tets, d.target);
+    CHECK(again.inverted == d.check.inverted);
+    CHECK(again.degenerate == d.check.degenerate);
+  }
+  if (policy == SnapPolicy::none || policy == SnapPolicy::nearest) CHECK(r.stats.chebyshev_moves == 0);
+}
+
+}  // namespace
+
+TEST_CASE("every snap policy: the exact map verifies, the doubles' verdict holds on a second code path") {
+  const GeneratedDomain grid = perturbed_grid(4, 3, 3, 7);
+  const GeneratedDomain slab = thin_slab(5, 4, 3, 1);
+  for (const SnapPolicy policy : policies)
+    for (const char* shape : {"tet", "stiff-tet", "sphere", "star:5"}) {
+      CAPTURE(to_string(policy));
+      CAPTURE(shape);
+      MapOptions o;
+      o.snap = policy;
+      for (const GeneratedDomain* dom : {&grid, &slab}) {
+        const MapProblem p = problem_from(*dom, shape);
+        const MapResult r = map_checked(p, o);
+        check_double_map(p, r, policy);
+        if (policy == SnapPolicy::repair) CHECK(r.doubles.check.valid());
+      }
+    }
+}
+
+TEST_CASE("the Chebyshev pass keeps the exact map valid and the result deterministic") {
+  const MapProblem p = problem_from(voxel_ball(3, 4), "star:9");
+  MapOptions o;
+  o.snap = SnapPolicy::chebyshev_pass;
+  const MapResult a = map_checked(p, o);
+  const MapResult b = map_checked(p, o);
+  CHECK(a.stats.chebyshev_moves > 0);
+  CHECK(a.target == b.target);
+  CHECK(a.doubles.target == b.doubles.target);
+}
+
+TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair separates them") {
+  const MapProblem p = problem_from(perturbed_grid(3, 3, 3, 3), "sphere");
+  MapOptions o;
+  o.snap = SnapPolicy::none;
+  const MapResult r = map_checked(p, o);
+
+  Embedding e;
+  e.mesh = topology::TetMesh(r.target.size(), r.tets);
+  e.source = r.source;
+  e.target = r.target;
+  e.unexpanded.assign(r.target.size(), 0);
+  e.boundary = topology::boundary_vertex_flags(e.mesh);
+  // Move one interior vertex v to within 2^-80 of the way to a neighbour a (on the segment from
+  // v to a, still strictly inside v's star kernel, checked exactly): its nearest double is a's.
+  bool crowded = false;
+  for (VertexId v = 0; v < e.num_vertices() && !crowded; ++v) {
+    if (e.boundary[v]) continue;
+    const ExpansionCone cone = gather_expansion_cone(e, v);
+    for (TetId t : e.mesh.tets_of(v)) {
+      for (VertexId a : e.mesh.tet(t)) {
+        if (a == v || !e.boundary[a]) continue;
+        const Rational eps(Integer(1), Integer(1) << 80);
+        std::array<Rational, 3> x;
+        for (int i = 0; i < 3; ++i)
+          x[std::size_t(i)] =
+              e.target[a].coordinate(i) + eps * (e.target[v].coordinate(i) - e.target[a].coordinate(i));
+        const HPoint xp(x[0], x[1], x[2]);
+        if (!strictly_inside(cone, xp) || nearest(xp) != nearest(e.target[a])) continue;
+        e.target[v] = xp;
+        crowded = true;
+        break;
+      }
+      if (crowded) break;
+    }
+  }
+  REQUIRE(crowded);
+  Embedding rounded = e;
+  const DoubleMap plain = make_double_map(rounded, SnapPolicy::nearest, {});
+  REQUIRE_FALSE(plain.check.valid());
+  CHECK(plain.check.degenerate > 0);
+
+  const DoubleMap mended = make_double_map(e, SnapPolicy::repair, {});
+  CHECK(mended.check.valid());
+  CHECK(recount(r.tets, mended.target).degenerate == 0);
+  // The exact map is still valid after the exact moves repair made.
+  for (TetId t : e.mesh.live_tets()) CHECK(e.orient_target(e.mesh.tet(t)) == Sign::positive);
+  for (VertexId v = 0; v < e.num_vertices(); ++v)
+    if (e.boundary[v]) CHECK(e.target[v] == r.target[v]);
+}
