@@ -42,6 +42,19 @@ std::uint64_t splitmix(std::uint64_t x) {
 // right away, refining them in turn up to this depth; deeper, they go back to the queue.
 constexpr int max_depth = 3;
 
+// Sets the trace label for a scope and restores the previous one on exit.
+class Relabel {
+ public:
+  Relabel(const char*& label, const char* now) : label_(label), saved_(label) { label_ = now; }
+  ~Relabel() { label_ = saved_; }
+  Relabel(const Relabel&) = delete;
+  Relabel& operator=(const Relabel&) = delete;
+
+ private:
+  const char*& label_;
+  const char* saved_;
+};
+
 class ClusterExpander {
  public:
   ClusterExpander(Embedding& e, const ExpansionSettings& s, MapStatistics& stats) : e_(e), s_(s), stats_(stats) {}
@@ -215,6 +228,7 @@ class ClusterExpander {
     const VertexId v = entry.v;
     switch (entry.kind) {
       case Kind::automatic:
+        label_ = "automatic";
         expand_to(v, e_.center, entry.k);
         ++stats_.expansions_automatic;
         return;
@@ -222,19 +236,21 @@ class ClusterExpander {
         std::optional<Placement> p = std::move(cached_[v]);
         if (!p) p = place(gather_expansion_cone(e_, v), nullptr);
         if (!p->ok()) throw MapError(MapErrorKind::internal, "a simple cone lost its interior", "vertex " + std::to_string(v));
-        expand_to(v, p->position, entry.k);
+        label_ = "simple";
+        expand_to(v, p->position, entry.k, &*p);
         ++stats_.expansions_simple;
         return;
       }
       case Kind::star_shapify:
       case Kind::inflate:
         // A failure changes nothing that matters for v: it waits until its star changes.
+        label_ = entry.kind == Kind::inflate ? "inflation" : "star-shapified";
         if (!refine_and_expand(v, 0)) ++failures_;
         return;
     }
   }
 
-  void expand_to(VertexId v, const HPoint& position, int k) {
+  void expand_to(VertexId v, const HPoint& position, int k, const Placement* placement = nullptr) {
     e_.target[v] = position;
     e_.unexpanded[v] = 0;
     --cluster_;
@@ -246,6 +262,36 @@ class ClusterExpander {
       throw MapError(MapErrorKind::internal, "expansion broke an invariant: " + why, "vertex " + std::to_string(v));
     if (s_.check) check_all("after expanding vertex " + std::to_string(v));
     dirty_star(v);
+    if (s_.trace) trace_row(v, position, placement);
+  }
+
+  void trace_row(VertexId v, const HPoint& position, const Placement* placement) const {
+    TraceRow row;
+    row.step = expanded_;
+    row.kind = label_;
+    row.vertex = v;
+    row.bits = position.bit_size();
+    if (placement) {
+      row.cone_rows = placement->rows;
+      row.lp = placement->info.certified ? "certified" : placement->info.fell_back ? "exact-fallback" : "exact";
+    } else {
+      row.lp = "none";
+    }
+    double total = 0;
+    std::size_t live = 0;
+    for (VertexId w = 0; w < e_.num_vertices(); ++w) {
+      if (e_.mesh.tets_of(w).empty()) continue;
+      const std::size_t b = e_.target[w].bit_size();
+      row.max_bits = std::max(row.max_bits, b);
+      total += double(b);
+      ++live;
+    }
+    row.mean_bits = live ? total / double(live) : 0;
+    row.added_vertices = e_.num_vertices() - s_.input_vertices;
+    row.degenerate_left = topology::count_degenerate_tets(e_.mesh, e_.unexpanded);
+    row.cluster_left = cluster_;
+    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s_.start).count();
+    s_.trace(row);
   }
 
   void check_all(const std::string& when) const {
@@ -285,6 +331,7 @@ class ClusterExpander {
   // Expands cluster vertex v now if it can be done: simply; after re-centring its base; by
   // inflation of dangling base edges; by star-shapification. Each step keeps every invariant.
   bool refine_and_expand(VertexId v, int depth) {
+    const Relabel relabel(label_, depth > 0 ? "refinement" : label_);
     const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
     if (!st.expandable) return false;
     if (try_simple(v, st.manifold_k)) return true;
@@ -305,7 +352,7 @@ class ClusterExpander {
     if (cone.base_tets == 0) return false;
     const Placement p = place(cone, nullptr);
     if (!p.ok()) return false;
-    expand_to(v, p.position, k);
+    expand_to(v, p.position, k, &p);
     ++stats_.expansions_simple;
     return true;
   }
@@ -374,7 +421,7 @@ class ClusterExpander {
       pushed.push_back(push(v, b));
       ++stats_.pushes;
     }
-    expand_to(v, p.position, k);
+    expand_to(v, p.position, k, &p);
     ++stats_.expansions_star_shapified;
     if (depth + 1 < max_depth)
       for (auto it = pushed.rbegin(); it != pushed.rend(); ++it)
@@ -454,7 +501,7 @@ class ClusterExpander {
       if (std::string why = check_local_invariant(e_, m); !why.empty())
         throw MapError(MapErrorKind::internal, "a bend broke an invariant: " + why, "vertex " + std::to_string(m));
     }
-    expand_to(v, p.position, k);
+    expand_to(v, p.position, k, &p);
     ++stats_.expansions_star_shapified;
     return true;
   }
@@ -543,7 +590,7 @@ class ClusterExpander {
     for (;;) {
       const Placement p = place(gather_expansion_cone(e_, v), &w);
       if (p.ok()) {
-        expand_to(v, p.position, k);
+        expand_to(v, p.position, k, &p);
         ++stats_.expansions_star_shapified;
         return true;
       }
@@ -604,6 +651,7 @@ class ClusterExpander {
   }
 
   bool isolate(VertexId x) {
+    const Relabel relabel(label_, "refinement");
     const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, x, e_.unexpanded, ws_);
     if (!st.expandable) return false;
     if (try_simple(x, st.manifold_k)) return true;
@@ -623,6 +671,7 @@ class ClusterExpander {
   std::unordered_map<VertexId, int> inflations_, relaxed_moves_;
   std::size_t cluster_ = 0, expanded_ = 0, failures_ = 0, max_bits_ = 0;
   bool aggressive_ = false;
+  const char* label_ = "";  // the kind of expansion under way, for the trace
   std::chrono::steady_clock::time_point last_report_{};
 };
 

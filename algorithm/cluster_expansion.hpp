@@ -44,6 +44,7 @@ struct ExpansionSettings {
   std::optional<std::chrono::steady_clock::time_point> deadline;
   std::chrono::steady_clock::time_point start;
   std::function<void(const MapProgress&)> progress;
+  std::function<void(const TraceRow&)> trace;
   const std::vector<HPoint>* prescribed = nullptr;  // per vertex, for the check mode
   std::size_t input_vertices = 0;
   std::size_t vertex_budget = 0;  // refinement stops (stuck) beyond this many vertices in total

@@ -39,6 +39,22 @@ struct MapProgress {
   double seconds = 0;
 };
 
+// One row of the precision study (`cmx map --trace`): written after every expansion.
+struct TraceRow {
+  std::size_t step = 0;              // 1, 2, ... (expansions so far)
+  const char* kind = "";             // simple, star-shapified, refinement, inflation, automatic
+  std::uint32_t vertex = 0;
+  std::size_t cone_rows = 0;         // half-spaces of the cone's LP (0: no LP, automatic)
+  const char* lp = "";               // certified, exact-fallback, exact, none
+  std::size_t bits = 0;              // bits of the new position (largest homogeneous coordinate)
+  std::size_t max_bits = 0;          // over every vertex's current target position
+  double mean_bits = 0;
+  std::size_t added_vertices = 0;    // vertices added so far (preprocessing included)
+  std::size_t degenerate_left = 0;   // tets with two or more cluster vertices
+  std::size_t cluster_left = 0;
+  double seconds = 0;
+};
+
 struct MapOptions {
   FilterPolicy filter;                        // predicate arithmetic
   PlacementOptions placement;                 // LP backend, norm, precision reduction
@@ -48,6 +64,8 @@ struct MapOptions {
   bool collapse = true;                       // collapse added vertices when the map stays valid
   SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/double_output.hpp)
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
+  // Called after every expansion when set (costs a pass over vertices and tets per row).
+  std::function<void(const TraceRow&)> trace;
 };
 
 struct MapStatistics {

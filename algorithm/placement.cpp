@@ -92,6 +92,7 @@ Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& optio
     return out;
   }
   const std::vector<lp::HalfSpace> h = lp_halfspaces(cone);
+  out.rows = h.size();
   const lp::ChebyshevResult c = lp::chebyshev_center(h, options.lp);
   out.status = c.status;
   out.info = c.lp.info;

@@ -30,6 +30,7 @@ struct Placement {
   lp::ChebyshevStatus status = lp::ChebyshevStatus::infeasible;
   HPoint position;           // valid when status == interior
   std::size_t centre_bits = 0, bits = 0;  // bits of the centre and of the position (max coordinate)
+  std::size_t rows = 0;                   // half-spaces of the LP (the cone's constraints)
   lp::SolveInfo info;
   bool ok() const { return status == lp::ChebyshevStatus::interior; }
 };

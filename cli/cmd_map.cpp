@@ -33,7 +33,7 @@ constexpr const char* usage =
     "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--time-limit S] [--check]\n"
     "               [--no-collapse] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
-    "               [--snap repair|chebyshev-pass|nearest|none] [--quiet]\n"
+    "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--quiet]\n"
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
     "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
     "the verdict.\n"
@@ -60,6 +60,10 @@ constexpr const char* usage =
     "                    chebyshev-pass = move every interior vertex to the Chebyshev centre of its\n"
     "                    star (exact map stays valid), then round; nearest = round and check;\n"
     "                    none = round, no check\n"
+    "  --trace T.csv     one CSV row per expansion (kind, cone size, LP outcome, bits of the new\n"
+    "                    position, largest and mean bits so far, added vertices, degenerate tets\n"
+    "                    and cluster vertices left, seconds); written also when the run stops\n"
+    "                    early; draw it with `cmx plot T.csv -o T.svg`. Slows the run down.\n"
     "  --quiet           no progress line, no verdict on stdout\n"
     "Exit codes: 0 mapped and verified; 2 bad command line; 3 unreadable or malformed input;\n"
     "4 not a valid problem (not a ball, boundary mismatch, degenerate or mirrored boundary);\n"
@@ -67,7 +71,7 @@ constexpr const char* usage =
     "On any failure no output file is written (an existing one is left untouched).\n";
 
 struct Args {
-  std::string domain, boundary, codomain, shape, out, report;
+  std::string domain, boundary, codomain, shape, out, report, trace;
   std::vector<std::string> formats;
   double time_limit = 0;
   bool check = false, quiet = false;
@@ -106,6 +110,8 @@ std::string parse_args(const std::vector<std::string>& args, Args& a) {
       if (!value(a.out)) return "-o needs a path";
     } else if (x == "--report") {
       if (!value(a.report)) return "--report needs a path";
+    } else if (x == "--trace") {
+      if (!value(a.trace)) return "--trace needs a path";
     } else if (x == "--format") {
       if (!value(v)) return "--format needs a list";
       for (const auto& f : split_list(v)) {
@@ -301,6 +307,21 @@ void write_report(const std::string& path, const JsonObject& j) {
   io::write_file_atomically(path, [&](std::ostream& os) { os << j.text() << '\n'; });
 }
 
+constexpr const char* trace_header =
+    "step,kind,vertex,cone_rows,lp,bits,max_bits,mean_bits,added_vertices,degenerate_left,cluster_left,seconds\n";
+
+std::string trace_line(const algorithm::TraceRow& r) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%zu,%s,%u,%zu,%s,%zu,%zu,%.2f,%zu,%zu,%zu,%.4f\n", r.step, r.kind, r.vertex, r.cone_rows,
+                r.lp, r.bits, r.max_bits, r.mean_bits, r.added_vertices, r.degenerate_left, r.cluster_left, r.seconds);
+  return buf;
+}
+
+void write_trace(const std::string& path, const std::string& rows) {
+  if (path.empty()) return;
+  io::write_file_atomically(path, [&](std::ostream& os) { os << trace_header << rows; });
+}
+
 void progress_line(const algorithm::MapProgress& p) {
   std::fprintf(stderr, "\r  expanded %zu, left %zu, added vertices %zu, max bits %zu, %.1f s   ", p.expanded, p.remaining,
                p.splits, p.max_bits, p.seconds);
@@ -335,6 +356,8 @@ int run(const std::vector<std::string>& argv) {
   }
   const bool show_progress = !a.quiet && isatty(2);
   if (show_progress) a.options.progress = progress_line;
+  std::string trace_rows;
+  if (!a.trace.empty()) a.options.trace = [&](const algorithm::TraceRow& row) { trace_rows += trace_line(row); };
   algorithm::MapResult r;
   try {
     r = algorithm::map_to_domain(problem, a.options);
@@ -345,6 +368,7 @@ int run(const std::vector<std::string>& argv) {
     return exit_code_of(e.kind());
   }
   if (show_progress) std::fputc('\n', stderr);
+  write_trace(a.trace, trace_rows);
   if (r.outcome != algorithm::MapOutcome::success) {
     std::fprintf(stderr, "cmx map: %s: %s\n", algorithm::to_string(r.outcome), r.message.c_str());
     write_report(a.report, report_json(a, &r, algorithm::to_string(r.outcome), r.message));

@@ -2,6 +2,7 @@
 // independent checker of ../shared/tools (written apart from the project) when it is present.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -105,6 +106,64 @@ TEST_CASE("cmx map --snap: every policy runs; the written doubles are what the r
     if (!none) CHECK(all_positive == valid);
   }
   CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--snap", "round"}).exit_code == 2);
+}
+
+TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
+  const Case c = make_case("grid:3,3,3", "stiff-tet");
+  const std::string trace = c.dir + "/t.csv", svg = c.dir + "/t.svg";
+  const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", c.dir + "/out", "--trace", trace, "--report",
+                          c.dir + "/r.json", "--quiet"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  std::istringstream in(slurp(trace));
+  std::string line;
+  REQUIRE(std::getline(in, line));
+  CHECK(line == "step,kind,vertex,cone_rows,lp,bits,max_bits,mean_bits,added_vertices,degenerate_left,cluster_left,seconds");
+  std::size_t rows = 0;
+  std::string last;
+  while (std::getline(in, line)) {
+    ++rows;
+    CHECK(std::count(line.begin(), line.end(), ',') == 11);
+    last = line;
+  }
+  // One row per expansion: the report's simple + star-shapified + automatic expansions.
+  const std::string report = slurp(c.dir + "/r.json");
+  auto number = [&](const std::string& key) {
+    const auto at = report.find("\"" + key + "\": ");
+    REQUIRE(at != std::string::npos);
+    return std::stoul(report.substr(at + key.size() + 4));
+  };
+  CHECK(rows == number("simple") + number("star_shapified") + number("automatic"));
+  CHECK(rows >= 8);  // the 3x3x3 grid has 8 interior vertices
+  // The last row: no cluster vertex and no degenerate tet left.
+  CHECK(last.substr(last.size() - 1) != ",");
+  const std::vector<std::string> cells = [&] {
+    std::vector<std::string> out;
+    std::stringstream ss(last);
+    for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
+    return out;
+  }();
+  REQUIRE(cells.size() == 12);
+  CHECK(cells[9] == "0");
+  CHECK(cells[10] == "0");
+
+  const auto p = run_cmx({"plot", trace, "-o", svg});
+  INFO(p.err);
+  REQUIRE(p.exit_code == 0);
+  const std::string text = slurp(svg);
+  CHECK(text.find("<svg") != std::string::npos);
+  CHECK(text.find("<polyline") != std::string::npos);
+  CHECK(text.find("degenerate tets left") != std::string::npos);
+
+  // A malformed trace: exit 3, the line named, no output.
+  const std::string bad = write_temp_file(
+      "step,kind,vertex,cone_rows,lp,bits,max_bits,mean_bits,added_vertices,degenerate_left,cluster_left,seconds\n"
+      "1,simple,3,4,certified,54,60,40,0,10,5,0.1\n2,simple,4,4,certified,nan,60,40,0,9,4,0.2\n");
+  const auto b = run_cmx({"plot", bad, "-o", c.dir + "/bad.svg"});
+  CHECK(b.exit_code == 3);
+  CHECK(b.err.find(":3") != std::string::npos);
+  CHECK_FALSE(fs::exists(c.dir + "/bad.svg"));
+  CHECK(run_cmx({"plot", trace}).exit_code == 2);
 }
 
 TEST_CASE("cmx map --shape generates the boundary itself, and reruns give identical bytes") {
