@@ -62,7 +62,7 @@ void check_double_map(const MapProblem& p, const MapResult& r, SnapPolicy policy
 
 }  // namespace
 
-TEST_CASE("every snap policy: the exact map verifies, the doubles' verdict holds on a second code path") {
+TEST_CASE("every snap policy: the exact map verifies and the doubles verdict holds on a second code path") {
   const GeneratedDomain grid = perturbed_grid(4, 3, 3, 7);
   const GeneratedDomain slab = thin_slab(5, 4, 3, 1);
   for (const SnapPolicy policy : policies)

@@ -81,7 +81,7 @@ TEST_CASE("cmx map writes the exact map and the display formats, and reports a v
   else MESSAGE("skipped the independent checker: no ../shared/tools");
 }
 
-TEST_CASE("cmx map --snap: every policy runs; the written doubles are what the report says") {
+TEST_CASE("cmx map --snap: every policy runs, and the written doubles are what the report says") {
   const Case c = make_case("ball:2", "star:4");
   for (const char* policy : {"none", "nearest", "chebyshev-pass", "repair"}) {
     CAPTURE(policy);
