@@ -12,6 +12,7 @@
 #include "algorithm/invariants.hpp"
 #include "algorithm/map_error.hpp"
 #include "algorithm/placement.hpp"
+#include "arith/rounding.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
@@ -84,6 +85,10 @@ class ClusterExpander {
       const std::size_t before = cluster_;
       handle(*next);
       if (cluster_ < before) aggressive_ = false;
+      if (s_.smooth_every && expanded_ >= next_smooth_) {
+        smooth_recent();
+        next_smooth_ = expanded_ + s_.smooth_every;
+      }
       flush_dirty();
     }
     report_progress(true);
@@ -263,6 +268,7 @@ class ClusterExpander {
     if (s_.check) check_all("after expanding vertex " + std::to_string(v));
     dirty_star(v);
     if (s_.trace) trace_row(v, position, placement);
+    if (s_.smooth_every) recent_.push_back(v);
   }
 
   void trace_row(VertexId v, const HPoint& position, const Placement* placement) const {
@@ -324,6 +330,63 @@ class ClusterExpander {
     --cluster_;
     ++version_[x];
     dirty_star(c);
+  }
+
+  // --- smoothing (paper Sec. 4.2.4) -------------------------------------------------------------
+  // Every `smooth_every` expansions, the expanded non-boundary neighbours of the vertices expanded
+  // since the last time, if they still touch the cluster, move toward the centroid of their
+  // expanded neighbours (Laplacian; cluster neighbours at p_c would pull them back to p_c): the
+  // centroid rounded to a double-sized dyadic, else halfway back toward the current position, up
+  // to 4 times. A move is kept only when every tet around the vertex keeps its state, i.e. the
+  // point is strictly inside the vertex's own cone (exact), so every invariant holds.
+  void smooth_recent() {
+    std::vector<VertexId> movers;
+    for (VertexId v : recent_)
+      for (TetId t : e_.mesh.tets_of(v))
+        for (VertexId b : e_.mesh.tet(t))
+          if (!e_.unexpanded[b] && !e_.boundary[b] && touches_cluster(b)) movers.push_back(b);
+    recent_.clear();
+    std::sort(movers.begin(), movers.end());
+    movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
+    for (VertexId b : movers) smooth_vertex(b);
+    if (s_.check) check_all("after smoothing");
+  }
+
+  bool touches_cluster(VertexId b) const {
+    for (TetId t : e_.mesh.tets_of(b))
+      for (VertexId w : e_.mesh.tet(t))
+        if (e_.unexpanded[w]) return true;
+    return false;
+  }
+
+  void smooth_vertex(VertexId b) {
+    std::array<Rational, 3> sum{Rational(0), Rational(0), Rational(0)};
+    std::unordered_map<VertexId, char> seen;
+    std::size_t n = 0;
+    for (TetId t : e_.mesh.tets_of(b))
+      for (VertexId w : e_.mesh.tet(t)) {
+        if (w == b || e_.unexpanded[w] || seen[w]++) continue;
+        for (int i = 0; i < 3; ++i) sum[std::size_t(i)] += e_.target[w].coordinate(i);
+        ++n;
+      }
+    if (n == 0) return;
+    const ExpansionCone cone = gather_expansion_cone(e_, b);
+    std::array<Rational, 3> target;
+    for (int i = 0; i < 3; ++i) target[std::size_t(i)] = sum[std::size_t(i)] / Rational(std::int64_t(n));
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      std::array<Rational, 3> q;
+      for (int i = 0; i < 3; ++i) q[std::size_t(i)] = round_to_dyadic(target[std::size_t(i)], 53).value();
+      const HPoint candidate(q[0], q[1], q[2]);
+      if (!(candidate == e_.target[b]) && strictly_inside(cone, candidate)) {
+        e_.target[b] = candidate;
+        ++stats_.smoothing_moves;
+        max_bits_ = std::max(max_bits_, candidate.bit_size());
+        dirty_star(b);
+        return;
+      }
+      for (int i = 0; i < 3; ++i)
+        target[std::size_t(i)] = (target[std::size_t(i)] + e_.target[b].coordinate(i)) / Rational(2);
+    }
   }
 
   // --- local refinement ----------------------------------------------------------------------
@@ -671,6 +734,8 @@ class ClusterExpander {
   std::unordered_map<VertexId, int> inflations_, relaxed_moves_;
   std::size_t cluster_ = 0, expanded_ = 0, failures_ = 0, max_bits_ = 0;
   bool aggressive_ = false;
+  std::vector<VertexId> recent_;  // expanded since the last smoothing
+  std::size_t next_smooth_ = 0;
   const char* label_ = "";  // the kind of expansion under way, for the trace
   std::chrono::steady_clock::time_point last_report_{};
 };

@@ -111,6 +111,7 @@ MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
     settings.deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
   settings.progress = options.progress;
   settings.trace = options.trace;
+  settings.smooth_every = options.smooth_every;
   settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior
   settings.input_vertices = s.input_vertices;
   settings.vertex_budget = std::max<std::size_t>(200000, 50 * s.input_vertices);

@@ -63,6 +63,7 @@ struct MapOptions {
   bool check = false;                         // assert every invariant after every step (slow)
   bool collapse = true;                       // collapse added vertices when the map stays valid
   SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/double_output.hpp)
+  std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
   // Called after every expansion when set (costs a pass over vertices and tets per row).
   std::function<void(const TraceRow&)> trace;
@@ -86,6 +87,7 @@ struct MapStatistics {
   std::size_t pushes = 0;                     // vertices pushed into the cluster (star-shapification)
   std::size_t bends = 0;                      // spoke splits of star-shapification (new expanded vertices)
   std::size_t relaxations = 0;                // expanded vertices re-centred in their star's kernel
+  std::size_t smoothing_moves = 0;            // Laplacian moves kept (paper Sec. 4.2.4)
   std::size_t inflation_splits = 0;
   std::size_t collapsed = 0;                  // added vertices collapsed away at the end
   // Double output.

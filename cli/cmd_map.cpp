@@ -33,7 +33,7 @@ constexpr const char* usage =
     "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--time-limit S] [--check]\n"
     "               [--no-collapse] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
-    "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--quiet]\n"
+    "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N] [--quiet]\n"
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
     "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
     "the verdict.\n"
@@ -60,6 +60,9 @@ constexpr const char* usage =
     "                    chebyshev-pass = move every interior vertex to the Chebyshev centre of its\n"
     "                    star (exact map stays valid), then round; nearest = round and check;\n"
     "                    none = round, no check\n"
+    "  --smooth N        every N expansions, move the cluster's expanded neighbours near the last\n"
+    "                    expansions toward their neighbours' centroid where every tet keeps its\n"
+    "                    state (paper Sec. 4.2.4; default 0: off)\n"
     "  --trace T.csv     one CSV row per expansion (kind, cone size, LP outcome, bits of the new\n"
     "                    position, largest and mean bits so far, added vertices, degenerate tets\n"
     "                    and cluster vertices left, seconds); written also when the run stops\n"
@@ -110,6 +113,12 @@ std::string parse_args(const std::vector<std::string>& args, Args& a) {
       if (!value(a.out)) return "-o needs a path";
     } else if (x == "--report") {
       if (!value(a.report)) return "--report needs a path";
+    } else if (x == "--smooth") {
+      if (!value(v)) return "--smooth needs a number of expansions";
+      char* end = nullptr;
+      const unsigned long long n = std::strtoull(v.c_str(), &end, 10);
+      if (end == v.c_str() || *end || v[0] == '-' || n > 1000000) return "--smooth needs an integer from 0 to 1000000";
+      a.options.smooth_every = std::size_t(n);
     } else if (x == "--trace") {
       if (!value(a.trace)) return "--trace needs a path";
     } else if (x == "--format") {
@@ -249,6 +258,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   opt.str("lp", a.options.placement.lp.backend);
   opt.str("norm", std::string(lp::to_string(a.options.placement.lp.norm)));
   opt.str("snap", std::string(algorithm::to_string(a.options.snap)));
+  opt.num("smooth", std::uint64_t(a.options.smooth_every));
   opt.num("time_limit", a.time_limit);
   j.obj("options", opt);
   if (!r) return j;
@@ -271,6 +281,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   km.num("1", std::uint64_t(s.k_manifold[1])).num("2", std::uint64_t(s.k_manifold[2])).num("3", std::uint64_t(s.k_manifold[3]));
   km.num("other", std::uint64_t(s.k_manifold[0]));
   ex.obj("k_manifold", km);
+  ex.num("smoothing_moves", std::uint64_t(s.smoothing_moves));
   ex.num("bends", std::uint64_t(s.bends)).num("relaxations", std::uint64_t(s.relaxations)).num("pushes", std::uint64_t(s.pushes)).num("inflation_splits", std::uint64_t(s.inflation_splits));
   ex.num("collapsed", std::uint64_t(s.collapsed));
   ex.num("lps", std::uint64_t(s.lps)).num("lps_certified", std::uint64_t(s.lps_certified));

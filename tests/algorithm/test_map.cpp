@@ -105,6 +105,18 @@ TEST_CASE("every precision policy, LP backend and filter gives a verified map") 
   map_checked(p, o);
 }
 
+TEST_CASE("smoothing every few expansions keeps every invariant and moves vertices") {
+  MapOptions o;
+  o.smooth_every = 3;
+  std::size_t moves = 0;
+  for (const char* shape : shapes) {
+    CAPTURE(shape);
+    const MapResult r = map_checked(problem_from(perturbed_grid(4, 4, 3, 5), shape), o);
+    moves += r.stats.smoothing_moves;
+  }
+  CHECK(moves > 0);
+}
+
 TEST_CASE("without the final collapses every added vertex is kept, and the map is still valid") {
   const MapProblem p = problem_from(thin_slab(4, 4, 1, 1), "tet");
   MapOptions o;

@@ -106,6 +106,8 @@ TEST_CASE("cmx map --snap: every policy runs, and the written doubles are what t
     if (!none) CHECK(all_positive == valid);
   }
   CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--snap", "round"}).exit_code == 2);
+  CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--smooth", "-1"}).exit_code == 2);
+  CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--smooth", "ten"}).exit_code == 2);
 }
 
 TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
