@@ -1,5 +1,6 @@
 // cmx map: the product. A ball-topology tet mesh and prescribed star-shaped boundary positions in,
 // a refined mesh whose image has no inverted or degenerate tet out, verified exactly.
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -292,6 +293,8 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   times.num("validate", s.seconds_validate).num("preprocess", s.seconds_preprocess).num("expand", s.seconds_expand);
   times.num("collapse", s.seconds_collapse).num("double", s.seconds_double);
   times.num("verify", s.seconds_verify).num("total", s.seconds_total);
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) == 0) j.num("peak_rss_kb", std::uint64_t(usage.ru_maxrss));  // Linux: KiB
   filter.num("semi_static", std::uint64_t(s.filter.semi_static));
   filter.num("adaptive", std::uint64_t(s.filter.adaptive[0] + s.filter.adaptive[1] + s.filter.adaptive[2] + s.filter.adaptive[3]));
   filter.num("interval", std::uint64_t(s.filter.interval)).num("mpfr", std::uint64_t(s.filter.mpfr));
