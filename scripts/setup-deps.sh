@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages cmx needs, only those that are missing.
 # Does nothing (and needs no root) when everything is present.
-# Usage: scripts/setup-deps.sh [--fuzz] [--bench]
+# Usage: scripts/setup-deps.sh [--fuzz] [--bench] [--dataset]
 set -euo pipefail
 
 packages=(
@@ -17,6 +17,7 @@ for arg in "$@"; do
   case "$arg" in
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
     --bench) packages+=(libcgal-dev) ;;
+    --dataset) packages+=(parallel) ;;  # bench/dataset/run.sh
     *) echo "setup-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac
 done
