@@ -80,6 +80,20 @@ TEST_CASE("every snap policy: the exact map verifies and the doubles verdict hol
     }
 }
 
+TEST_CASE("every combination of precision policy and snap policy gives a verified map") {
+  const MapProblem p = problem_from(perturbed_grid(3, 3, 2, 4), "star:2");
+  for (const char* precision : {"none", "dyadic", "shift", "segment"})
+    for (const SnapPolicy policy : policies) {
+      CAPTURE(precision);
+      CAPTURE(to_string(policy));
+      MapOptions o;
+      o.placement.precision = *parse_precision_policy(precision);
+      o.snap = policy;
+      const MapResult r = map_checked(p, o);
+      check_double_map(p, r, policy);
+    }
+}
+
 TEST_CASE("the Chebyshev pass keeps the exact map valid and the result deterministic") {
   const MapProblem p = problem_from(voxel_ball(3, 4), "star:9");
   MapOptions o;
