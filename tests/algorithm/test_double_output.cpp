@@ -81,7 +81,7 @@ TEST_CASE("every snap policy: the exact map verifies and the doubles verdict hol
 }
 
 TEST_CASE("every combination of precision policy and snap policy gives a verified map") {
-  const MapProblem p = problem_from(perturbed_grid(3, 3, 2, 4), "star:2");
+  const MapProblem p = problem_from(perturbed_grid(3, 3, 2, 3), "sphere");
   for (const char* precision : {"none", "dyadic", "shift", "segment"})
     for (const SnapPolicy policy : policies) {
       CAPTURE(precision);
