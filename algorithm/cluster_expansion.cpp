@@ -12,7 +12,8 @@
 #include "algorithm/invariants.hpp"
 #include "algorithm/map_error.hpp"
 #include "algorithm/placement.hpp"
-#include "arith/rounding.hpp"
+#include "algorithm/smoothing.hpp"
+#include "algorithm/trace_row.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
@@ -272,29 +273,13 @@ class ClusterExpander {
   }
 
   void trace_row(VertexId v, const HPoint& position, const Placement* placement) const {
-    TraceRow row;
+    TraceRow row = state_row(e_, s_.input_vertices);
     row.step = expanded_;
     row.kind = label_;
     row.vertex = v;
     row.bits = position.bit_size();
-    if (placement) {
-      row.cone_rows = placement->rows;
-      row.lp = placement->info.certified ? "certified" : placement->info.fell_back ? "exact-fallback" : "exact";
-    } else {
-      row.lp = "none";
-    }
-    double total = 0;
-    std::size_t live = 0;
-    for (VertexId w = 0; w < e_.num_vertices(); ++w) {
-      if (e_.mesh.tets_of(w).empty()) continue;
-      const std::size_t b = e_.target[w].bit_size();
-      row.max_bits = std::max(row.max_bits, b);
-      total += double(b);
-      ++live;
-    }
-    row.mean_bits = live ? total / double(live) : 0;
-    row.added_vertices = e_.num_vertices() - s_.input_vertices;
-    row.degenerate_left = topology::count_degenerate_tets(e_.mesh, e_.unexpanded);
+    row.cone_rows = placement ? placement->rows : 0;
+    row.lp = !placement ? "none" : placement->info.certified ? "certified" : placement->info.fell_back ? "exact-fallback" : "exact";
     row.cluster_left = cluster_;
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s_.start).count();
     s_.trace(row);
@@ -334,11 +319,8 @@ class ClusterExpander {
 
   // --- smoothing (paper Sec. 4.2.4) -------------------------------------------------------------
   // Every `smooth_every` expansions, the expanded non-boundary neighbours of the vertices expanded
-  // since the last time, if they still touch the cluster, move toward the centroid of their
-  // expanded neighbours (Laplacian; cluster neighbours at p_c would pull them back to p_c): the
-  // centroid rounded to a double-sized dyadic, else halfway back toward the current position, up
-  // to 4 times. A move is kept only when every tet around the vertex keeps its state, i.e. the
-  // point is strictly inside the vertex's own cone (exact), so every invariant holds.
+  // since the last time, if they still touch the cluster, move to their laplacian_position
+  // (smoothing.hpp), which keeps every tet's state.
   void smooth_recent() {
     std::vector<VertexId> movers;
     for (VertexId v : recent_)
@@ -360,33 +342,12 @@ class ClusterExpander {
   }
 
   void smooth_vertex(VertexId b) {
-    std::array<Rational, 3> sum{Rational(0), Rational(0), Rational(0)};
-    std::unordered_map<VertexId, char> seen;
-    std::size_t n = 0;
-    for (TetId t : e_.mesh.tets_of(b))
-      for (VertexId w : e_.mesh.tet(t)) {
-        if (w == b || e_.unexpanded[w] || seen[w]++) continue;
-        for (int i = 0; i < 3; ++i) sum[std::size_t(i)] += e_.target[w].coordinate(i);
-        ++n;
-      }
-    if (n == 0) return;
-    const ExpansionCone cone = gather_expansion_cone(e_, b);
-    std::array<Rational, 3> target;
-    for (int i = 0; i < 3; ++i) target[std::size_t(i)] = sum[std::size_t(i)] / Rational(std::int64_t(n));
-    for (int attempt = 0; attempt < 4; ++attempt) {
-      std::array<Rational, 3> q;
-      for (int i = 0; i < 3; ++i) q[std::size_t(i)] = round_to_dyadic(target[std::size_t(i)], 53).value();
-      const HPoint candidate(q[0], q[1], q[2]);
-      if (!(candidate == e_.target[b]) && strictly_inside(cone, candidate)) {
-        e_.target[b] = candidate;
-        ++stats_.smoothing_moves;
-        max_bits_ = std::max(max_bits_, candidate.bit_size());
-        dirty_star(b);
-        return;
-      }
-      for (int i = 0; i < 3; ++i)
-        target[std::size_t(i)] = (target[std::size_t(i)] + e_.target[b].coordinate(i)) / Rational(2);
-    }
+    const std::optional<HPoint> q = laplacian_position(e_, b);
+    if (!q) return;
+    e_.target[b] = *q;
+    ++stats_.smoothing_moves;
+    max_bits_ = std::max(max_bits_, q->bit_size());
+    dirty_star(b);
   }
 
   // --- local refinement ----------------------------------------------------------------------
@@ -583,18 +544,7 @@ class ClusterExpander {
   // an arc of at least two vertices rather than a bare path, which would need inflation in turn.
   std::optional<VertexId> choose_push(VertexId v, VertexId w, const std::array<VertexId, 3>& keep, ConeBase& base,
                                       bool leaves) const {
-    std::unordered_map<VertexId, int> dist;
-    std::deque<VertexId> q{w};
-    dist[w] = 0;
-    while (!q.empty()) {
-      const VertexId x = q.front();
-      q.pop_front();
-      for (VertexId y : base.adj[x])
-        if (!dist.count(y)) {
-          dist[y] = dist[x] + 1;
-          q.push_back(y);
-        }
-    }
+    std::unordered_map<VertexId, int> dist = base_distances(base, w);
     std::unordered_map<VertexId, int> blocks = blocking_endpoints(e_, v, centroid(e_, keep));
     std::optional<VertexId> best;
     std::tuple<int, int, int, int, VertexId> best_key{};
@@ -658,15 +608,7 @@ class ClusterExpander {
         return true;
       }
       base = cone_base(e_, v);
-      std::unordered_map<VertexId, int> dist;
-      std::deque<VertexId> q{w};
-      dist[w] = 0;
-      while (!q.empty()) {
-        const VertexId x = q.front();
-        q.pop_front();
-        for (VertexId y : base.adj[x])
-          if (!dist.count(y)) dist[y] = dist[x] + 1, q.push_back(y);
-      }
+      std::unordered_map<VertexId, int> dist = base_distances(base, w);
       std::optional<VertexId> best;
       std::tuple<int, int, VertexId> best_key{};
       for (VertexId b : base.verts) {

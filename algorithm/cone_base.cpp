@@ -1,6 +1,7 @@
 #include "algorithm/cone_base.hpp"
 
 #include <algorithm>
+#include <deque>
 
 #include "kernel/plane.hpp"
 #include "topology/complex_queries.hpp"
@@ -27,6 +28,20 @@ ConeBase cone_base(const Embedding& e, VertexId v) {
   std::sort(b.verts.begin(), b.verts.end());
   b.verts.erase(std::unique(b.verts.begin(), b.verts.end()), b.verts.end());
   return b;
+}
+
+std::unordered_map<VertexId, int> base_distances(const ConeBase& base, VertexId from) {
+  std::unordered_map<VertexId, int> dist{{from, 0}};
+  std::deque<VertexId> queue{from};
+  while (!queue.empty()) {
+    const VertexId x = queue.front();
+    queue.pop_front();
+    const auto it = base.adj.find(x);
+    if (it == base.adj.end()) continue;
+    for (VertexId y : it->second)
+      if (dist.emplace(y, dist[x] + 1).second) queue.push_back(y);
+  }
+  return dist;
 }
 
 Witness choose_witness(const ConeBase& base) {

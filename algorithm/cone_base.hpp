@@ -30,6 +30,9 @@ struct Witness {
 };
 Witness choose_witness(const ConeBase& base);
 
+// Distances in base edges from `from` to every base vertex it reaches.
+std::unordered_map<VertexId, int> base_distances(const ConeBase& base, VertexId from);
+
 // The centroid of a triangle of target positions: the aim point of star-shapification.
 HPoint centroid(const Embedding& e, const std::array<VertexId, 3>& t);
 

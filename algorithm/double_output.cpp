@@ -33,17 +33,26 @@ std::string_view to_string(SnapPolicy p) {
   return "?";
 }
 
+namespace {
+
+// Moves v to the precision-reduced Chebyshev centre of its star's kernel; true when it moved.
+// The current position is inside the kernel, so the LP has interior; a failure (a degenerate
+// face, which a valid map cannot have) just leaves the vertex where it is.
+bool recentre(Embedding& e, VertexId v, const PlacementOptions& options) {
+  const Placement p = place_in_cone(gather_expansion_cone(e, v), options);
+  if (!p.ok() || p.position == e.target[v]) return false;
+  e.target[v] = p.position;
+  return true;
+}
+
+}  // namespace
+
 ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options) {
   ChebyshevPassResult r;
   for (VertexId v = 0; v < e.num_vertices(); ++v) {
     if (e.boundary[v] || e.unexpanded[v] || e.mesh.tets_of(v).empty()) continue;
-    const Placement p = place_in_cone(gather_expansion_cone(e, v), options);
     ++r.lps;
-    // The current position is inside the kernel, so the LP has interior; a failure (a degenerate
-    // face, which a valid map cannot have) just leaves the vertex where it is.
-    if (!p.ok() || p.position == e.target[v]) continue;
-    e.target[v] = p.position;
-    ++r.moved;
+    if (recentre(e, v, options)) ++r.moved;
   }
   return r;
 }
@@ -54,31 +63,35 @@ std::array<double, 3> nearest_double(const HPoint& p) {
   return {to_double(p.coordinate(0)), to_double(p.coordinate(1)), to_double(p.coordinate(2))};
 }
 
-bool positive(const std::array<double, 3>& a, const std::array<double, 3>& b, const std::array<double, 3>& c,
-              const std::array<double, 3>& d) {
-  return orient3d(a.data(), b.data(), c.data(), d.data()) == Sign::positive;
-}
+// One pass over the tets with the doubles: how many they invert or flatten, and the interior
+// vertices of those tets, ascending (what the next repair round moves).
+struct Scan {
+  DoubleCheck check;
+  std::vector<VertexId> offenders;
+};
 
-// Interior vertices of the tets that `doubles` invert or flatten, ascending.
-std::vector<VertexId> offending_vertices(const Embedding& e,
-                                         const std::vector<std::array<double, 3>>& doubles) {
-  std::vector<VertexId> out;
+Scan scan(const Embedding& e, const std::vector<std::array<double, 3>>& doubles) {
+  Scan out;
   for (TetId t : e.mesh.live_tets()) {
     const topology::Tet& tet = e.mesh.tet(t);
-    if (positive(doubles[tet[0]], doubles[tet[1]], doubles[tet[2]], doubles[tet[3]])) continue;
+    const Sign s = orient3d(doubles[tet[0]].data(), doubles[tet[1]].data(), doubles[tet[2]].data(),
+                            doubles[tet[3]].data());
+    if (s == Sign::positive) continue;
+    ++(s == Sign::negative ? out.check.inverted : out.check.degenerate);
     for (VertexId v : tet)
-      if (!e.boundary[v]) out.push_back(v);
+      if (!e.boundary[v]) out.offenders.push_back(v);
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  std::sort(out.offenders.begin(), out.offenders.end());
+  out.offenders.erase(std::unique(out.offenders.begin(), out.offenders.end()), out.offenders.end());
   return out;
 }
 
 // One repair round: each offending vertex in turn (Gauss-Seidel: later ones see earlier moves).
-std::size_t repair_round(Embedding& d, std::vector<std::array<double, 3>>& doubles,
-                         const PlacementOptions& options, std::size_t& lps) {
+std::size_t repair_round(Embedding& d, const std::vector<VertexId>& offenders,
+                         std::vector<std::array<double, 3>>& doubles, const PlacementOptions& options,
+                         std::size_t& lps) {
   std::size_t moved = 0;
-  for (VertexId v : offending_vertices(d, doubles)) {
+  for (VertexId v : offenders) {
     // A face opposite v that the doubles make degenerate (two of its vertices on one double point,
     // or three on one line) cannot be fixed by moving v: it is left to its own vertices, which
     // offend too, and v only has to keep its other tets positive.
@@ -135,10 +148,10 @@ std::vector<VertexId> outside_in(const Embedding& e, const std::vector<VertexId>
 // neighbours (the exact map stays valid). Vertices that the exact map crowds closer together than
 // doubles can separate (measured: eleven vertices within 1e-16 of p_c on a random-star case) move
 // apart a little with every round.
-std::size_t local_exact_round(Embedding& e, const std::vector<std::array<double, 3>>& doubles,
+std::size_t local_exact_round(Embedding& e, const std::vector<VertexId>& offenders,
                               const PlacementOptions& options, std::size_t& lps) {
   std::vector<VertexId> movers;
-  for (VertexId v : offending_vertices(e, doubles)) {
+  for (VertexId v : offenders) {
     movers.push_back(v);
     for (TetId t : e.mesh.tets_of(v))
       for (VertexId w : e.mesh.tet(t))
@@ -148,13 +161,30 @@ std::size_t local_exact_round(Embedding& e, const std::vector<std::array<double,
   movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
   std::size_t moved = 0;
   for (VertexId v : outside_in(e, movers)) {
-    const Placement p = place_in_cone(gather_expansion_cone(e, v), options);
     ++lps;
-    if (!p.ok() || p.position == e.target[v]) continue;
-    e.target[v] = p.position;
-    ++moved;
+    if (recentre(e, v, options)) ++moved;
   }
   return moved;
+}
+
+// Rounds of `round(offenders)` (which moves vertices, returns how many and may change the
+// doubles) with `rescan()` after each, until the doubles are valid, a round moves nothing, `cap`
+// rounds, or `patience` rounds without fewer bad tets.
+template <class Round, class Rescan>
+void repair_rounds(Scan& now, std::size_t& rounds, std::size_t cap, Round round, Rescan rescan) {
+  constexpr std::size_t patience = 3;
+  auto bad = [](const DoubleCheck& c) { return c.inverted + c.degenerate; };
+  std::size_t best = bad(now.check), stale = 0;
+  while (rounds < cap && !now.check.valid() && stale < patience) {
+    ++rounds;
+    const std::size_t moved = round(now.offenders);
+    now = rescan();
+    if (moved == 0) break;
+    if (bad(now.check) < best)
+      best = bad(now.check), stale = 0;
+    else
+      ++stale;
+  }
 }
 
 std::vector<std::array<double, 3>> nearest_doubles(const Embedding& e) {
@@ -176,31 +206,23 @@ DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOption
   out.target = nearest_doubles(e);
   if (policy == SnapPolicy::none) return out;
   out.checked = true;
-  std::vector<topology::Tet> tets;
-  tets.reserve(e.mesh.num_tets());
-  for (TetId t : e.mesh.live_tets()) tets.push_back(e.mesh.tet(t));
-  out.check = check_doubles(tets, out.target);
-  if (policy != SnapPolicy::repair || out.check.valid()) return out;
+  Scan now = scan(e, out.target);
+  out.check = now.check;
+  if (policy != SnapPolicy::repair || now.check.valid()) return out;
 
-  // First in the exact map, where every move is safe; then among the doubles themselves. Rounds
-  // stop at the cap, or after `patience` rounds without fewer offending tets (measured on
-  // tgs_100349: a crowd of vertices within 1e-19 of each other does not open in 32 rounds).
-  constexpr std::size_t max_exact_rounds = 32, patience = 3;
-  auto bad = [](const DoubleCheck& c) { return c.inverted + c.degenerate; };
-  std::size_t best = bad(out.check), stale = 0;
-  while (out.exact_rounds < max_exact_rounds && !out.check.valid() && stale < patience) {
-    ++out.exact_rounds;
-    const std::size_t moved = local_exact_round(e, out.target, options, out.lps);
-    out.chebyshev_moves += moved;
-    out.target = nearest_doubles(e);
-    out.check = check_doubles(tets, out.target);
-    if (moved == 0) break;
-    if (bad(out.check) < best)
-      best = bad(out.check), stale = 0;
-    else
-      ++stale;
-  }
-  if (out.check.valid()) return out;
+  // First in the exact map, where every move is safe (measured on tgs_100349: a crowd of vertices
+  // within 1e-19 of each other does not open in 32 rounds); then among the doubles themselves.
+  repair_rounds(
+      now, out.exact_rounds, 32,
+      [&](const std::vector<VertexId>& offenders) {
+        const std::size_t moved = local_exact_round(e, offenders, options, out.lps);
+        out.chebyshev_moves += moved;
+        out.target = nearest_doubles(e);
+        return moved;
+      },
+      [&] { return scan(e, out.target); });
+  out.check = now.check;
+  if (now.check.valid()) return out;
 
   // The double map as an embedding of its own (exact positions = the doubles), so that cones are
   // read with every neighbour where the doubles put it.
@@ -211,21 +233,15 @@ DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOption
   d.filter = e.filter;
   d.target.reserve(e.num_vertices());
   for (const auto& q : out.target) d.target.push_back(HPoint::from_doubles(q[0], q[1], q[2]));
-  // Bounded: each round re-centres only the vertices of offending tets; stop when a round changes
-  // nothing (the same doubles would be tried again).
-  constexpr std::size_t max_rounds = 16;
-  best = bad(out.check), stale = 0;
-  while (out.rounds < max_rounds && stale < patience) {
-    ++out.rounds;
-    const std::size_t moved = repair_round(d, out.target, options, out.lps);
-    out.repaired += moved;
-    out.check = check_doubles(tets, out.target);
-    if (moved == 0 || out.check.valid()) break;
-    if (bad(out.check) < best)
-      best = bad(out.check), stale = 0;
-    else
-      ++stale;
-  }
+  repair_rounds(
+      now, out.rounds, 16,
+      [&](const std::vector<VertexId>& offenders) {
+        const std::size_t moved = repair_round(d, offenders, out.target, options, out.lps);
+        out.repaired += moved;
+        return moved;
+      },
+      [&] { return scan(d, out.target); });
+  out.check = now.check;
   return out;
 }
 
