@@ -84,7 +84,15 @@ class ClusterExpander {
         continue;
       }
       const std::size_t before = cluster_;
-      handle(*next);
+      try {
+        handle(*next);
+      } catch (PrecisionLost& lost) {
+        if (lost.loss().phase == "split") {  // a split's loss knows neither the step nor the operation
+          lost.loss().step = expanded_;
+          lost.loss().phase = std::string(label_) + " (split)";
+        }
+        throw;
+      }
       if (cluster_ < before) aggressive_ = false;
       if (s_.smooth_every && expanded_ >= next_smooth_) {
         smooth_recent();
@@ -264,8 +272,7 @@ class ClusterExpander {
     ++stats_.k_manifold[k >= 1 && k <= 3 ? k : 0];
     max_bits_ = std::max(max_bits_, position.bit_size());
     ++version_[v];
-    if (std::string why = check_local_invariant(e_, v); !why.empty())
-      throw MapError(MapErrorKind::internal, "expansion broke an invariant: " + why, "vertex " + std::to_string(v));
+    require_valid(v, "expansion", placement);
     if (s_.check) check_all("after expanding vertex " + std::to_string(v));
     dirty_star(v);
     if (s_.trace) trace_row(v, position, placement);
@@ -283,6 +290,25 @@ class ClusterExpander {
     row.cluster_left = cluster_;
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s_.start).count();
     s_.trace(row);
+  }
+
+  // Invariant 2 around v after v moved or appeared. In an exact run a failure is a bug; in a
+  // non-exact one (--arith) the rounding of v's position lost validity here: the run stops with
+  // the loss (step, operation, vertex, tet, bits the exact position had).
+  void require_valid(VertexId v, const char* action, const Placement* placement) const {
+    if (e_.arith.exact()) {
+      if (std::string why = check_local_invariant(e_, v); !why.empty())
+        throw MapError(MapErrorKind::internal, std::string(action) + " broke an invariant: " + why, "vertex " + std::to_string(v));
+      return;
+    }
+    const std::optional<InvalidTet> bad = first_invalid_tet_around(e_, v);
+    if (!bad) return;
+    std::string what = std::string(action) + " of vertex " + std::to_string(v) + " to a rounded position";
+    if (placement && placement->rounded_outside) what += " outside its cone";
+    PrecisionLoss loss = precision_loss_at(e_, v, *bad, label_, std::move(what));
+    loss.step = expanded_ - (std::string_view(action) == "expansion" ? 1 : 0);
+    loss.exact_bits = placement ? placement->unrounded_bits : 0;
+    throw PrecisionLost(std::move(loss));
   }
 
   void check_all(const std::string& when) const {
@@ -399,8 +425,7 @@ class ClusterExpander {
       ++stats_.relaxations;
       max_bits_ = std::max(max_bits_, p.position.bit_size());
       dirty_star(b);
-      if (std::string why = check_local_invariant(e_, b); !why.empty())
-        throw MapError(MapErrorKind::internal, "re-centring broke an invariant: " + why, "vertex " + std::to_string(b));
+      require_valid(b, "re-centring", &p);
     }
     return moved;
   }
@@ -522,8 +547,7 @@ class ClusterExpander {
       current[bend.b] = m;
       ++stats_.bends;
       max_bits_ = std::max(max_bits_, bend.q.bit_size());
-      if (std::string why = check_local_invariant(e_, m); !why.empty())
-        throw MapError(MapErrorKind::internal, "a bend broke an invariant: " + why, "vertex " + std::to_string(m));
+      require_valid(m, "a bend", nullptr);
     }
     expand_to(v, p.position, k, &p);
     ++stats_.expansions_star_shapified;

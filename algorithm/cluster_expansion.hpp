@@ -47,8 +47,8 @@ struct ExpansionSettings {
   std::function<void(const TraceRow&)> trace;
   const std::vector<HPoint>* prescribed = nullptr;  // per vertex, for the check mode
   std::size_t input_vertices = 0;
-  std::size_t vertex_budget = 0;
-  std::size_t smooth_every = 0;   // smoothing period in expansions (0: off)  // refinement stops (stuck) beyond this many vertices in total
+  std::size_t vertex_budget = 0;  // refinement stops (stuck) beyond this many vertices in total
+  std::size_t smooth_every = 0;   // smoothing period in expansions (0: off)
 };
 
 struct ExpansionOutcome {

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "algorithm/invariants.hpp"
 #include "algorithm/map_error.hpp"
 #include "kernel/orient.hpp"
 #include "topology/mesh_edits.hpp"
@@ -9,11 +10,19 @@
 namespace cmx::algorithm {
 
 VertexId Embedding::append_vertex(const HPoint& src, const HPoint& at, bool in_cluster) {
-  source.push_back(src);
-  target.push_back(at);
+  source.push_back(arith.round(src));
+  target.push_back(arith.round(at));
   unexpanded.push_back(in_cluster ? 1 : 0);
   boundary.push_back(0);
   return VertexId(source.size() - 1);
+}
+
+// A non-exact arith rounds the source midpoint (or barycentre) of a split: its tets may flatten.
+void Embedding::check_rounded_split(VertexId v, const HPoint& exact_source) const {
+  if (arith.exact() || source[v] == exact_source) return;
+  if (const std::optional<InvalidTet> bad = first_invalid_tet_around(*this, v, true))
+    throw PrecisionLost(precision_loss_at(*this, v, *bad, "split", "the rounded source position of new vertex " +
+                                                                     std::to_string(v) + " flattens a source tet"));
 }
 
 VertexId Embedding::split_edge(VertexId a, VertexId b, const HPoint& at, bool in_cluster) {
@@ -22,6 +31,7 @@ VertexId Embedding::split_edge(VertexId a, VertexId b, const HPoint& at, bool in
   if (!r.ok) throw MapError(MapErrorKind::internal, "edge split refused: " + r.message);
   const VertexId v = append_vertex(src, at, in_cluster);
   if (v != r.new_vertex) throw MapError(MapErrorKind::internal, "edge split: vertex numbering out of step");
+  check_rounded_split(v, src);
   return v;
 }
 
@@ -34,6 +44,7 @@ VertexId Embedding::split_face(VertexId a, VertexId b, VertexId c, const HPoint&
   if (!r.ok) throw MapError(MapErrorKind::internal, "face split refused: " + r.message);
   const VertexId v = append_vertex(src, at, in_cluster);
   if (v != r.new_vertex) throw MapError(MapErrorKind::internal, "face split: vertex numbering out of step");
+  check_rounded_split(v, src);
   return v;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "kernel/coordinate_arith.hpp"
 #include "kernel/filter_policy.hpp"
 #include "kernel/homogeneous_point.hpp"
 #include "topology/tet_mesh.hpp"
@@ -25,13 +26,15 @@ struct Embedding {
   HPoint center;                    // p_c
   FilterPolicy filter;              // arithmetic of every predicate
   FilterStats* stats = nullptr;     // optional tier counters
+  CoordinateArith arith;            // number system of every coordinate (--arith; default exact)
 
   std::size_t num_vertices() const { return mesh.num_vertices(); }
 
   // Splits edge ab at a new vertex whose source position is the source midpoint (so the source
   // mesh stays a positive refinement) and whose target position is `at`; the new vertex is a
   // cluster vertex when `in_cluster`. Returns the new vertex. Throws MapError(internal) when the
-  // edge does not exist.
+  // edge does not exist. With a non-exact `arith` the source position is rounded, and a source tet
+  // the rounding flattens or inverts throws PrecisionLost (phase "split").
   VertexId split_edge(VertexId a, VertexId b, const HPoint& at, bool in_cluster);
   // Same for face abc (1 -> 3), source position the source barycentre.
   VertexId split_face(VertexId a, VertexId b, VertexId c, const HPoint& at, bool in_cluster);
@@ -45,6 +48,7 @@ struct Embedding {
 
  private:
   VertexId append_vertex(const HPoint& src, const HPoint& at, bool in_cluster);
+  void check_rounded_split(VertexId v, const HPoint& exact_source) const;
 };
 
 }  // namespace cmx::algorithm

@@ -18,6 +18,7 @@ const char* to_string(MapOutcome o) {
     case MapOutcome::success: return "success";
     case MapOutcome::time_limit: return "time_limit";
     case MapOutcome::stuck: return "stuck";
+    case MapOutcome::precision_lost: return "precision_lost";
   }
   return "?";
 }
@@ -34,6 +35,7 @@ Embedding initial_embedding(const ValidatedProblem& v, const MapOptions& options
   e.source = v.source;
   e.boundary = v.boundary;
   e.filter = options.filter;
+  e.arith = options.placement.arith;
   e.stats = stats;
   const std::size_t n = v.source.size();
   e.target.resize(n);
@@ -68,21 +70,38 @@ void output_statistics(const Embedding& e, MapResult& r) {
   s.mean_bits = e.target.empty() ? 0 : total / double(e.target.size());
 }
 
+// A non-exact run reads its input as a program in that arithmetic would: every coordinate
+// rounded to nearest. The rounded problem is what it maps and what its result is verified against;
+// the report counts the coordinates that moved. Returns that count.
+std::size_t round_problem(MapProblem& p, const CoordinateArith& arith) {
+  std::size_t moved = 0;
+  auto round = [&](Point3& q) {
+    for (Rational& c : q) {
+      Rational r = arith.round(c);
+      if (r != c) ++moved, c = std::move(r);
+    }
+  };
+  for (Point3& q : p.source) round(q);
+  for (Point3& q : p.boundary_positions) round(q);
+  return moved;
+}
+
+void fill_output(const Embedding& e, MapResult& r) {
+  r.tets.reserve(e.mesh.num_tets());
+  for (TetId t : e.mesh.live_tets()) r.tets.push_back(e.mesh.tet(t));
+  r.source = e.source;
+  r.target = e.target;
+  output_statistics(e, r);
+}
+
 }  // namespace
 
-MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
-  const auto start = Clock::now();
-  MapResult r;
-  MapStatistics& s = r.stats;
-  const ValidatedProblem v = validate_problem(problem, options.filter, options.placement.lp);
-  s.input_vertices = problem.source.size();
-  s.input_tets = problem.tets.size();
-  s.input_boundary_vertices = problem.boundary_vertices.size();
-  s.input_interior_vertices = s.input_vertices - s.input_boundary_vertices;
-  s.seconds_validate = seconds_since(start);
+namespace {
 
-  auto phase = Clock::now();
-  Embedding e = initial_embedding(v, options, &s.filter);
+// Preprocessing and shrink (invariants asserted once): the state expansion starts from.
+void preprocess(Embedding& e, const ValidatedProblem& v, const MapOptions& options, std::vector<HPoint>& prescribed,
+                MapResult& r) {
+  MapStatistics& s = r.stats;
   const PreprocessResult pre = preprocess_and_shrink(e, v, options.placement);
   s.split_topology = pre.split_topology;
   s.split_fallback = pre.split_fallback;
@@ -91,7 +110,7 @@ MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
   s.lps += pre.lps;
   s.vertices_after_preprocess = e.num_vertices();
   s.tets_after_preprocess = e.mesh.num_tets();
-  std::vector<HPoint> prescribed = v.prescribed;
+  prescribed = v.prescribed;
   prescribed.resize(e.num_vertices());
   if (std::string why = check_invariants(e, prescribed); !why.empty())
     throw MapError(MapErrorKind::internal, "the shrunk state breaks an invariant: " + why);
@@ -99,9 +118,10 @@ MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
   s.shrink_radius = pre.shrink_radius;
   s.boundary_extent = boundary_extent(v.boundary_positions);
   r.center = e.center;
-  s.seconds_preprocess = seconds_since(phase);
+}
 
-  phase = Clock::now();
+ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_point start,
+                                     const std::vector<HPoint>& prescribed, std::size_t input_vertices) {
   ExpansionSettings settings;
   settings.placement = options.placement;
   settings.order = options.order;
@@ -113,10 +133,39 @@ MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
   settings.trace = options.trace;
   settings.smooth_every = options.smooth_every;
   settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior
-  settings.input_vertices = s.input_vertices;
-  settings.vertex_budget = std::max<std::size_t>(200000, 50 * s.input_vertices);
-  const ExpansionOutcome out = expand_cluster(e, settings, s);
+  settings.input_vertices = input_vertices;
+  settings.vertex_budget = std::max<std::size_t>(200000, 50 * input_vertices);
+  return settings;
+}
+
+// A non-exact run's coordinates are its output: the doubles are their plain rounding, checked.
+SnapPolicy snap_policy(const MapOptions& options) {
+  return options.placement.arith.exact() ? options.snap : SnapPolicy::nearest;
+}
+
+void make_doubles(Embedding& e, const MapOptions& options, MapResult& r) {
+  MapStatistics& s = r.stats;
+  r.doubles = make_double_map(e, snap_policy(options), options.placement);
+  s.chebyshev_moves = r.doubles.chebyshev_moves;
+  s.snap_exact_rounds = r.doubles.exact_rounds;
+  s.snap_repaired = r.doubles.repaired;
+  s.snap_rounds = r.doubles.rounds;
+  s.lps += r.doubles.lps;
+}
+
+void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapOptions& options, Clock::time_point start,
+                Embedding& e, MapResult& r) {
+  MapStatistics& s = r.stats;
+  auto phase = Clock::now();
+  std::vector<HPoint> prescribed;
+  preprocess(e, v, options, prescribed, r);
+  s.seconds_preprocess = seconds_since(phase);
+
+  phase = Clock::now();
+  const ExpansionOutcome out = expand_cluster(e, expansion_settings(options, start, prescribed, s.input_vertices), s);
   s.seconds_expand = seconds_since(phase);
+  r.outcome = out.outcome;
+  r.message = out.message;
   if (out.outcome == MapOutcome::success && options.collapse) {
     phase = Clock::now();
     s.collapsed = collapse_added_vertices(e, s.input_vertices);
@@ -125,29 +174,68 @@ MapResult map_to_domain(const MapProblem& problem, const MapOptions& options) {
   compact_vertices(e, s.input_vertices);  // vertices collapsed away, or inflation splits undone
   if (out.outcome == MapOutcome::success) {
     phase = Clock::now();
-    r.doubles = make_double_map(e, options.snap, options.placement);
-    s.chebyshev_moves = r.doubles.chebyshev_moves;
-    s.snap_exact_rounds = r.doubles.exact_rounds;
-    s.snap_repaired = r.doubles.repaired;
-    s.snap_rounds = r.doubles.rounds;
-    s.lps += r.doubles.lps;
+    make_doubles(e, options, r);
     s.seconds_double = seconds_since(phase);
   }
-  r.outcome = out.outcome;
-  r.message = out.message;
+  fill_output(e, r);
+  if (r.outcome != MapOutcome::success) return;
+  phase = Clock::now();
+  VerificationInput in{&problem.tets, &v.source, &problem.boundary_vertices, &v.boundary_positions};
+  r.verification = verify_map(in, r.tets, r.source, r.target);
+  s.seconds_verify = seconds_since(phase);
+  if (r.verification.ok()) return;
+  if (options.placement.arith.exact())
+    throw MapError(MapErrorKind::internal, "the computed map failed verification: " + r.verification.first_failure);
+  PrecisionLoss loss;  // every step checks what it rounds; this is the last line of defence
+  loss.phase = "verification";
+  loss.what = "the final map failed exact verification: " + r.verification.first_failure;
+  throw PrecisionLost(std::move(loss));
+}
 
-  r.tets.reserve(e.mesh.num_tets());
-  for (TetId t : e.mesh.live_tets()) r.tets.push_back(e.mesh.tet(t));
-  r.source = e.source;
-  r.target = e.target;
-  output_statistics(e, r);
-  if (r.outcome == MapOutcome::success) {
-    phase = Clock::now();
-    VerificationInput in{&problem.tets, &v.source, &problem.boundary_vertices, &v.boundary_positions};
-    r.verification = verify_map(in, r.tets, r.source, r.target);
-    s.seconds_verify = seconds_since(phase);
-    if (!r.verification.ok())
-      throw MapError(MapErrorKind::internal, "the computed map failed verification: " + r.verification.first_failure);
+}  // namespace
+
+MapResult map_to_domain(const MapProblem& given, const MapOptions& options) {
+  const auto start = Clock::now();
+  MapResult r;
+  MapStatistics& s = r.stats;
+  const CoordinateArith& arith = options.placement.arith;
+  ValidatedProblem v = validate_problem(given, options.filter, options.placement.lp);
+  MapProblem rounded;
+  if (!arith.exact()) {
+    rounded = given;
+    s.input_rounded = round_problem(rounded, arith);
+  }
+  const MapProblem& problem = arith.exact() ? given : rounded;
+  s.input_vertices = problem.source.size();
+  s.input_tets = problem.tets.size();
+  s.input_boundary_vertices = problem.boundary_vertices.size();
+  s.input_interior_vertices = s.input_vertices - s.input_boundary_vertices;
+  try {
+    if (s.input_rounded) {
+      try {
+        v = validate_problem(problem, options.filter, options.placement.lp);
+      } catch (const MapError& e) {
+        PrecisionLoss loss;
+        loss.phase = "input";
+        loss.what = "the input rounded to " + to_string(arith) + " is not a valid problem: " + e.what();
+        throw PrecisionLost(std::move(loss));
+      }
+    }
+    s.seconds_validate = seconds_since(start);
+    Embedding e = initial_embedding(v, options, &s.filter);
+    try {
+      run_method(problem, v, options, start, e, r);
+    } catch (const PrecisionLost&) {
+      r.tets.clear();
+      fill_output(e, r);  // the state where validity was lost
+      throw;
+    }
+  } catch (const PrecisionLost& lost) {
+    r.outcome = MapOutcome::precision_lost;
+    r.loss = lost.loss();
+    r.message = lost.loss().message();
+    r.verification = {};
+    r.doubles = {};
   }
   s.seconds_total = seconds_since(start);
   return r;

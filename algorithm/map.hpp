@@ -6,12 +6,14 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "algorithm/double_output.hpp"
 #include "algorithm/map_error.hpp"
 #include "algorithm/placement.hpp"
+#include "algorithm/precision_loss.hpp"
 #include "algorithm/verify_map.hpp"
 #include "arith/rational.hpp"
 #include "kernel/filter_policy.hpp"
@@ -57,7 +59,7 @@ struct TraceRow {
 
 struct MapOptions {
   FilterPolicy filter;                        // predicate arithmetic
-  PlacementOptions placement;                 // LP backend, norm, precision reduction
+  PlacementOptions placement;                 // LP backend, norm, precision reduction, coordinate arith
   topology::ExpansionOrder order;             // priority (default), index, random:SEED
   double time_limit_seconds = 0;              // 0 = none
   bool check = false;                         // assert every invariant after every step (slow)
@@ -71,6 +73,7 @@ struct MapOptions {
 
 struct MapStatistics {
   std::size_t input_vertices = 0, input_tets = 0, input_boundary_vertices = 0, input_interior_vertices = 0;
+  std::size_t input_rounded = 0;              // input coordinates a non-exact --arith rounded (it maps those)
   // Preprocessing splits, by reason (algorithm/preprocess.hpp).
   std::size_t split_topology = 0;             // chord faces/edges: the cluster mesh must be simply connected
   std::size_t split_all_boundary_tet = 0;     // all-boundary tet not positive
@@ -105,12 +108,14 @@ struct MapStatistics {
   FilterStats filter;
 };
 
-enum class MapOutcome { success, time_limit, stuck };
+// precision_lost: a non-exact --arith (placement.arith) lost validity; MapResult::loss says where.
+enum class MapOutcome { success, time_limit, stuck, precision_lost };
 const char* to_string(MapOutcome o);
 
 struct MapResult {
   MapOutcome outcome = MapOutcome::stuck;
-  std::string message;                        // why it stopped, for time_limit and stuck
+  std::string message;                        // why it stopped, for time_limit, stuck, precision_lost
+  std::optional<PrecisionLoss> loss;          // filled for precision_lost
   std::vector<topology::Tet> tets;            // output tets (input order, then new ones)
   std::vector<HPoint> source, target;         // one per output vertex; the first input_vertices are the input's
   HPoint center;                              // the shrink point p_c
@@ -120,7 +125,12 @@ struct MapResult {
 };
 
 // Throws MapError for invalid problems (not a ball, boundary mismatch, degenerate or mirrored or
-// non-star-shaped boundary, ...); time limit and stuck come back as outcomes with statistics.
+// non-star-shaped boundary, ...); time limit, stuck and precision lost come back as outcomes with
+// statistics. With a non-exact placement.arith the input is rounded to it first (the result maps
+// and is verified against the rounded input; stats.input_rounded counts the coordinates that
+// moved; a rounded input that is no longer a valid problem is a loss in phase "input"), every
+// coordinate the method creates is rounded to it, and the double output is the plain rounding
+// (--snap nearest) of those coordinates.
 MapResult map_to_domain(const MapProblem& problem, const MapOptions& options = {});
 
 }  // namespace cmx::algorithm

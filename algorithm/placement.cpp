@@ -82,6 +82,20 @@ std::optional<lp::Point3> centred_dyadic(const std::vector<lp::HalfSpace>& h, co
   return rounded(ok);
 }
 
+// Rounds out.position to a non-exact arith (see PlacementOptions::arith).
+void round_to_arith(const std::vector<lp::HalfSpace>& h, const lp::Point3& centre, const CoordinateArith& arith,
+                    Placement& out) {
+  out.unrounded_bits = out.bits;
+  lp::Point3 q = to_point3(arith.round(out.position));
+  if (!lp::strictly_inside(h, q)) {
+    const lp::Point3 c = to_point3(arith.round(to_hpoint(centre)));
+    if (lp::strictly_inside(h, c)) q = c;
+    else out.rounded_outside = true;
+  }
+  out.position = to_hpoint(q);
+  out.bits = lp::point_bits(q);
+}
+
 }  // namespace
 
 Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& options, const HPoint* segment_from,
@@ -121,6 +135,7 @@ Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& optio
   }
   out.position = to_hpoint(r.point);
   out.bits = lp::point_bits(r.point);
+  if (!options.arith.exact()) round_to_arith(h, c.center, options.arith, out);
   return out;
 }
 

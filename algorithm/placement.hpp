@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "algorithm/expansion_cone.hpp"
+#include "kernel/coordinate_arith.hpp"
 #include "lp/chebyshev_center.hpp"
 
 namespace cmx::algorithm {
@@ -24,6 +25,11 @@ std::string_view to_string(PrecisionPolicy p);
 struct PlacementOptions {
   lp::ChebyshevOptions lp;
   PrecisionPolicy precision = PrecisionPolicy::dyadic;
+  // Coordinates of a non-exact run (--arith): the chosen point is rounded to it; if the rounding
+  // leaves the cone, the rounded Chebyshev centre is tried; if that leaves it too, the rounded
+  // point is returned anyway, flagged: a float program would move there, and the caller reports
+  // the validity it loses.
+  CoordinateArith arith;
 };
 
 struct Placement {
@@ -31,6 +37,8 @@ struct Placement {
   HPoint position;           // valid when status == interior
   std::size_t centre_bits = 0, bits = 0;  // bits of the centre and of the position (max coordinate)
   std::size_t rows = 0;                   // half-spaces of the LP (the cone's constraints)
+  std::size_t unrounded_bits = 0;         // bits of the position before rounding to a non-exact arith
+  bool rounded_outside = false;           // that rounding left the cone (validity will be lost)
   lp::SolveInfo info;
   bool ok() const { return status == lp::ChebyshevStatus::interior; }
 };

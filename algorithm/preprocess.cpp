@@ -6,6 +6,7 @@
 #include <set>
 
 #include "algorithm/map_error.hpp"
+#include "algorithm/precision_loss.hpp"
 #include "arith/rounding.hpp"
 #include "lp/few_bit_point.hpp"
 #include "topology/chords.hpp"
@@ -214,7 +215,15 @@ class Preprocessor {
     if (!centre_) throw MapError(MapErrorKind::internal, "the shrink point constraints lost their interior");
     result_.shrink_radius = to_double(last_.radius);
     const lp::FewBitResult few = lp::few_bits_by_dyadics(accepted_, last_.center);
-    e_.center = HPoint(few.point[0], few.point[1], few.point[2]);
+    e_.center = e_.arith.round(HPoint(few.point[0], few.point[1], few.point[2]));
+    if (!e_.arith.exact() && !lp::strictly_inside(accepted_, {e_.center.coordinate(0), e_.center.coordinate(1),
+                                                              e_.center.coordinate(2)})) {
+      PrecisionLoss loss;
+      loss.phase = "shrink";
+      loss.what = "the shrink point rounded to " + to_string(e_.arith) + " is not strictly inside the kernel";
+      loss.exact_bits = lp::point_bits(few.point);
+      throw PrecisionLost(std::move(loss));
+    }
     for (VertexId v = 0; v < e_.num_vertices(); ++v)
       if (e_.unexpanded[v]) e_.target[v] = e_.center;
   }

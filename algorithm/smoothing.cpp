@@ -23,7 +23,7 @@ std::optional<HPoint> laplacian_position(const Embedding& e, VertexId v) {
   for (int attempt = 0; attempt < 4; ++attempt) {
     std::array<Rational, 3> q;
     for (int i = 0; i < 3; ++i) q[std::size_t(i)] = round_to_dyadic(aim[std::size_t(i)], 53).value();
-    const HPoint candidate(q[0], q[1], q[2]);
+    const HPoint candidate = e.arith.round(HPoint(q[0], q[1], q[2]));
     if (!(candidate == e.target[v]) && strictly_inside(cone, candidate)) return candidate;
     for (int i = 0; i < 3; ++i)
       aim[std::size_t(i)] = (aim[std::size_t(i)] + e.target[v].coordinate(i)) / Rational(2);

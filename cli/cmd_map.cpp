@@ -20,6 +20,7 @@
 #include "io/io_error.hpp"
 #include "io/tmap.hpp"
 #include "io/write_mesh.hpp"
+#include "kernel/coordinate_arith.hpp"
 #include "kernel/filter_policy.hpp"
 #include "lp/backend_registry.hpp"
 #ifdef CMX_HAVE_GLPK
@@ -34,7 +35,8 @@ constexpr const char* usage =
     "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--time-limit S] [--check]\n"
     "               [--no-collapse] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
-    "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N] [--quiet]\n"
+    "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
+    "               [--arith rational|double|mpfr:BITS] [--quiet]\n"
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
     "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
     "the verdict.\n"
@@ -64,6 +66,11 @@ constexpr const char* usage =
     "  --smooth N        every N expansions, move the cluster's expanded neighbours near the last\n"
     "                    expansions toward their neighbours' centroid where every tet keeps its\n"
     "                    state (paper Sec. 4.2.4; default 0: off)\n"
+    "  --arith A         coordinate arithmetic (default rational: exact). double or mpfr:BITS (2..65536\n"
+    "                    significant bits) round every coordinate the method creates, the input's must\n"
+    "                    already be representable; predicates stay exact on the rounded values. Such a\n"
+    "                    run stops where rounding first makes a tet inverted or degenerate (exit 8) and\n"
+    "                    reports the step, vertex and tet; --snap is then nearest\n"
     "  --trace T.csv     one CSV row per expansion (kind, cone size, LP outcome, bits of the new\n"
     "                    position, largest and mean bits so far, added vertices, degenerate tets\n"
     "                    and cluster vertices left, seconds); written also when the run stops\n"
@@ -71,7 +78,8 @@ constexpr const char* usage =
     "  --quiet           no progress line, no verdict on stdout\n"
     "Exit codes: 0 mapped and verified; 2 bad command line; 3 unreadable or malformed input;\n"
     "4 not a valid problem (not a ball, boundary mismatch, degenerate or mirrored boundary);\n"
-    "5 boundary not star-shaped; 6 time limit; 7 stuck; 10 internal error (please report).\n"
+    "5 boundary not star-shaped; 6 time limit; 7 stuck; 8 precision lost (--arith double|mpfr:BITS);\n"
+    "10 internal error (please report).\n"
     "On any failure no output file is written (an existing one is left untouched).\n";
 
 struct Args {
@@ -155,6 +163,12 @@ std::string parse_args(const std::vector<std::string>& args, Args& a) {
       if (!f) return why;
       if (f->kind == FilterPolicy::Kind::naive) return "--filter naive gives wrong signs; cmx map needs an exact policy";
       a.options.filter = *f;
+    } else if (x == "--arith") {
+      if (!value(v)) return "--arith needs a name";
+      std::string why;
+      const auto c = parse_coordinate_arith(v, &why);
+      if (!c) return why;
+      a.options.placement.arith = *c;
     } else if (x == "--snap") {
       if (!value(v)) return "--snap needs a name";
       const auto p = algorithm::parse_snap_policy(v);
@@ -209,6 +223,36 @@ void output_plan(const Args& a, std::string& stem, std::vector<std::string>& for
   formats.erase(std::unique(formats.begin(), formats.end()), formats.end());
 }
 
+// The snap policy the run applies: a non-exact --arith's doubles are the plain rounding.
+algorithm::SnapPolicy snap_used(const Args& a) {
+  return a.options.placement.arith.exact() ? a.options.snap : algorithm::SnapPolicy::nearest;
+}
+
+int exit_code_of(algorithm::MapOutcome outcome) {
+  switch (outcome) {
+    case algorithm::MapOutcome::success: return exit_ok;
+    case algorithm::MapOutcome::time_limit: return exit_time_limit;
+    case algorithm::MapOutcome::precision_lost: return exit_precision_lost;
+    case algorithm::MapOutcome::stuck: break;
+  }
+  return exit_stuck;
+}
+
+JsonObject loss_json(const algorithm::PrecisionLoss& l) {
+  JsonObject j;
+  j.str("phase", l.phase).num("step", std::uint64_t(l.step)).num("vertex", std::uint64_t(l.vertex)).str("what", l.what);
+  if (l.tet) {
+    const auto& t = *l.tet;
+    std::string ids;
+    for (const auto w : t) ids.append(ids.empty() ? "[" : ", ").append(std::to_string(w));
+    j.raw("tet", ids.append("]"));
+    j.str("space", l.in_source ? "source" : "target");
+    j.str("orientation", l.orientation == Sign::zero ? "degenerate" : "inverted");
+  }
+  j.num("exact_bits", std::uint64_t(l.exact_bits));
+  return j;
+}
+
 int exit_code_of(algorithm::MapErrorKind kind) {
   using K = algorithm::MapErrorKind;
   switch (kind) {
@@ -258,7 +302,8 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   opt.str("filter", to_string(a.options.filter));
   opt.str("lp", a.options.placement.lp.backend);
   opt.str("norm", std::string(lp::to_string(a.options.placement.lp.norm)));
-  opt.str("snap", std::string(algorithm::to_string(a.options.snap)));
+  opt.str("arith", to_string(a.options.placement.arith));
+  opt.str("snap", std::string(algorithm::to_string(snap_used(a))));
   opt.num("smooth", std::uint64_t(a.options.smooth_every));
   opt.num("time_limit", a.time_limit);
   j.obj("options", opt);
@@ -267,6 +312,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   JsonObject in, pre, ex, out, bits, times, verdict, filter;
   in.num("vertices", std::uint64_t(s.input_vertices)).num("tets", std::uint64_t(s.input_tets));
   in.num("boundary_vertices", std::uint64_t(s.input_boundary_vertices)).num("interior_vertices", std::uint64_t(s.input_interior_vertices));
+  in.num("rounded_coordinates", std::uint64_t(s.input_rounded));
   pre.num("splits_topology", std::uint64_t(s.split_topology));
   pre.num("splits_all_boundary_tet", std::uint64_t(s.split_all_boundary_tet));
   pre.num("splits_no_shrink_point", std::uint64_t(s.split_no_shrink_point));
@@ -313,6 +359,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   dbl.num("exact_repair_rounds", std::uint64_t(s.snap_exact_rounds)).num("double_repair_rounds", std::uint64_t(s.snap_rounds));
   j.obj("input", in).obj("preprocess", pre).obj("expansion", ex).obj("double_output", dbl).obj("output", out).obj("bits", bits);
   j.obj("seconds", times).obj("predicates", filter).obj("verdict", verdict);
+  if (r->loss) j.obj("precision_loss", loss_json(*r->loss));
   return j;
 }
 
@@ -386,7 +433,7 @@ int run(const std::vector<std::string>& argv) {
   if (r.outcome != algorithm::MapOutcome::success) {
     std::fprintf(stderr, "cmx map: %s: %s\n", algorithm::to_string(r.outcome), r.message.c_str());
     write_report(a.report, report_json(a, &r, algorithm::to_string(r.outcome), r.message));
-    return r.outcome == algorithm::MapOutcome::time_limit ? exit_time_limit : exit_stuck;
+    return exit_code_of(r.outcome);
   }
   const algorithm::DoubleMap& dm = r.doubles;
   if (!a.out.empty()) {
@@ -398,7 +445,11 @@ int run(const std::vector<std::string>& argv) {
   write_report(a.report, report_json(a, &r, "success", ""));
   if (!a.quiet) {
     const auto& s = r.stats;
-    std::printf("map: success, verified exactly (every tet positive in source and target, boundary as prescribed)\n");
+    std::printf("map: success, verified exactly (every tet positive in source and target, boundary as prescribed)%s\n",
+                a.options.placement.arith.exact() ? "" : (", coordinates in " + to_string(a.options.placement.arith)).c_str());
+    if (s.input_rounded)
+      std::printf("  input read in %s: %zu coordinates rounded; the map is verified for the rounded input\n",
+                  to_string(a.options.placement.arith).c_str(), s.input_rounded);
     std::printf("  %zu vertices / %zu tets in, %zu / %zu out (growth %.4f), %zu splits in preprocessing\n",
                 s.input_vertices, s.input_tets, s.output_vertices, s.output_tets, s.growth_ratio,
                 s.split_topology + s.split_all_boundary_tet + s.split_no_shrink_point + s.split_fallback);
@@ -406,7 +457,7 @@ int run(const std::vector<std::string>& argv) {
                 s.expansions_simple, s.expansions_star_shapified, s.pushes, s.expansions_inflated, s.expansions_automatic);
     if (dm.checked)
       std::printf("  largest coordinate: %zu bits; doubles (--snap %s) %s (%zu inverted, %zu degenerate)\n", s.max_bits,
-                  std::string(algorithm::to_string(a.options.snap)).c_str(), dm.check.valid() ? "valid" : "NOT valid",
+                  std::string(algorithm::to_string(snap_used(a))).c_str(), dm.check.valid() ? "valid" : "NOT valid",
                   dm.check.inverted, dm.check.degenerate);
     else
       std::printf("  largest coordinate: %zu bits; doubles not checked (--snap none)\n", s.max_bits);

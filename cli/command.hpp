@@ -16,6 +16,7 @@ enum ExitCode : int {
   exit_not_star_shaped = 5,
   exit_time_limit = 6,
   exit_stuck = 7,
+  exit_precision_lost = 8,  // a run with non-exact coordinates (--arith) lost validity
   exit_internal = 10,      // a bug: an invariant or verification failed
 };
 

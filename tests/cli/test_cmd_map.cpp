@@ -240,3 +240,38 @@ TEST_CASE("cmx map: the time limit exits 6 and leaves no output, an existing out
   CHECK(r.exit_code == 6);
   CHECK(slurp(out + ".tmap") == "old content\n");
 }
+
+TEST_CASE("cmx map --arith: double maps and verifies, too few bits exits 8 saying where, bad names exit 2") {
+  const Case c = make_case("grid:3,3,3", "sphere");
+  const std::string out = c.dir + "/dbl";
+  auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", out, "--arith", "double", "--report", out + ".json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("coordinates in double") != std::string::npos);
+  CHECK(slurp(out + ".json").find("\"arith\": \"double\"") != std::string::npos);
+  CHECK(slurp(out + ".json").find("\"snap\": \"nearest\"") != std::string::npos);
+  if (have_checker()) CHECK(independent_check(c, out + ".tmap"));
+
+  // An unperturbed integer grid survives 8-bit rounding; the sphere's expansions do not.
+  const std::string grid = c.dir + "/grid.vtk", sphere = c.dir + "/sphere.txt";
+  REQUIRE(run_cmx({"generate-mesh", "--shape", "grid:4,4,4", "-o", grid}).exit_code == 0);
+  REQUIRE(run_cmx({"boundary", grid, "--shape", "sphere", "-o", sphere}).exit_code == 0);
+  const std::string lost = c.dir + "/lost";
+  r = run_cmx({"map", grid, "--boundary", sphere, "-o", lost, "--arith", "mpfr:8", "--report", lost + ".json"});
+  CHECK(r.exit_code == 8);
+  CHECK(r.err.find("precision_lost: validity lost in") != std::string::npos);
+  CHECK(r.err.find("tet (") != std::string::npos);
+  CHECK_FALSE(fs::exists(lost + ".tmap"));
+  const std::string report = slurp(lost + ".json");
+  CHECK(report.find("\"status\": \"precision_lost\"") != std::string::npos);
+  CHECK(report.find("\"precision_loss\"") != std::string::npos);
+  CHECK(report.find("\"orientation\"") != std::string::npos);
+  CHECK(report.find("\"exact_valid\": false") != std::string::npos);
+
+  for (const char* bad : {"float", "mpfr:1", "mpfr:"}) {
+    CAPTURE(bad);
+    r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "--arith", bad});
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("rational, double or mpfr:BITS") != std::string::npos);
+  }
+}
