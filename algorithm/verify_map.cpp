@@ -1,6 +1,8 @@
 #include "algorithm/verify_map.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <map>
 
 #include "algorithm/describe.hpp"
@@ -18,6 +20,48 @@ using R3 = std::array<Rational, 3>;
 R3 coords(const HPoint& p) { return {p.coordinate(0), p.coordinate(1), p.coordinate(2)}; }
 
 std::string tet_text(const topology::Tet& t) { return ids_text(t); }
+
+// The verifier's own static filter (deliberately not the kernel's cascade, whose answers it
+// checks), for tets whose twelve coordinates are all doubles: det[b-a, c-a, d-a] evaluated in
+// Shewchuk's order for orient3d, whose rounding error is at most (7 + 56 eps) eps times the
+// permanent (eps = 2^-53; J. R. Shewchuk, Adaptive Precision Floating-Point Arithmetic, 1997),
+// provided nothing underflows or overflows: every nonzero difference lies in [2^-500, 2^300], so
+// every product and sum is a normal double. Otherwise, or when |det| is within the bound: exact.
+std::optional<Sign> static_orient(const HPoint& pa, const HPoint& pb, const HPoint& pc, const HPoint& pd) {
+  if (!pa.is_double() || !pb.is_double() || !pc.is_double() || !pd.is_double()) return std::nullopt;
+  const auto a = pa.approx(), b = pb.approx(), c = pc.approx(), d = pd.approx();
+  double v[9];
+  for (int i = 0; i < 3; ++i) {
+    v[i] = a[std::size_t(i)] - d[std::size_t(i)];
+    v[3 + i] = b[std::size_t(i)] - d[std::size_t(i)];
+    v[6 + i] = c[std::size_t(i)] - d[std::size_t(i)];
+  }
+  constexpr double tiny = 0x1p-500, huge = 0x1p300;
+  for (double x : v)
+    if (x != 0 && !(std::fabs(x) >= tiny && std::fabs(x) <= huge)) return std::nullopt;
+  const double adx = v[0], ady = v[1], adz = v[2], bdx = v[3], bdy = v[4], bdz = v[5], cdx = v[6], cdy = v[7], cdz = v[8];
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy, cdxady = cdx * ady, adxcdy = adx * cdy, adxbdy = adx * bdy,
+               bdxady = bdx * ady;
+  // Shewchuk's orient3d(a, b, c, d) is the sign of det[a-d, b-d, c-d] = -det[b-a, c-a, d-a].
+  const double det = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
+                           (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
+                           (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
+  constexpr double eps = 0x1p-53;
+  const double bound = (7.0 + 56.0 * eps) * eps * permanent;
+  if (det > bound) return Sign::negative;
+  if (-det > bound) return Sign::positive;
+  return std::nullopt;
+}
+
+}  // namespace
+
+Sign verification_orient(const HPoint& a, const HPoint& b, const HPoint& c, const HPoint& d) {
+  if (const std::optional<Sign> s = static_orient(a, b, c, d)) return *s;
+  return orient3d_exact(a, b, c, d);
+}
+
+namespace {
 
 // A triangle in space with the coordinate plane it is projected to (the axis dropped is the one
 // of the largest normal component, so the projection is injective on its plane).
@@ -48,12 +92,35 @@ PlaneTriangle make_triangle(const HPoint& a, const HPoint& b, const HPoint& c) {
   return t;
 }
 
+// Sign of projected_area(p, q, r, drop): with all-double inputs first by the static bound of
+// Shewchuk's orient2d, (3 + 16 eps) eps times the permanent (same ranges as static_orient).
+int projected_sign(const HPoint& hp, const HPoint& hq, const HPoint& hr, int drop) {
+  const int i = drop == 0 ? 1 : 0, j = drop == 2 ? 1 : 2;
+  if (hp.is_double() && hq.is_double() && hr.is_double()) {
+    const auto p = hp.approx(), q = hq.approx(), r = hr.approx();
+    const double v[4] = {q[std::size_t(i)] - p[std::size_t(i)], r[std::size_t(j)] - p[std::size_t(j)],
+                         q[std::size_t(j)] - p[std::size_t(j)], r[std::size_t(i)] - p[std::size_t(i)]};
+    bool safe = true;
+    for (double x : v) safe = safe && (x == 0 || (std::fabs(x) >= 0x1p-500 && std::fabs(x) <= 0x1p300));
+    if (safe) {
+      const double left = v[0] * v[1], right = v[2] * v[3], det = left - right;
+      constexpr double eps = 0x1p-53;
+      const double bound = (3.0 + 16.0 * eps) * eps * (std::fabs(left) + std::fabs(right));
+      if (det > bound) return 1;
+      if (-det > bound) return -1;
+    }
+  }
+  return sgn(projected_area(coords(hp), coords(hq), coords(hr), drop));
+}
+
 // x lies in the closed triangle (coplanar, and inside in the projection).
-bool contains(const PlaneTriangle& t, const HPoint& x, const R3& rx) {
-  if (t.sign == 0 || orient3d_exact(t.a, t.b, t.c, x) != Sign::zero) return false;
-  const int s1 = sgn(projected_area(t.ra, t.rb, rx, t.drop));
-  const int s2 = sgn(projected_area(t.rb, t.rc, rx, t.drop));
-  const int s3 = sgn(projected_area(t.rc, t.ra, rx, t.drop));
+bool contains(const PlaneTriangle& t, const HPoint& x) {
+  if (t.sign == 0) return false;
+  if (x == t.a || x == t.b || x == t.c) return true;  // most output boundary vertices are corners
+  if (verification_orient(t.a, t.b, t.c, x) != Sign::zero) return false;
+  const int s1 = projected_sign(t.a, t.b, x, t.drop);
+  const int s2 = projected_sign(t.b, t.c, x, t.drop);
+  const int s3 = projected_sign(t.c, t.a, x, t.drop);
   return s1 * t.sign >= 0 && s2 * t.sign >= 0 && s3 * t.sign >= 0;
 }
 
@@ -63,11 +130,12 @@ struct Counts {
   Sign first_sign = Sign::positive;
 };
 
+
 Counts orientation_counts(const std::vector<topology::Tet>& tets, const std::vector<HPoint>& pos) {
   Counts c;
   for (std::size_t i = 0; i < tets.size(); ++i) {
     const auto& t = tets[i];
-    const Sign s = orient3d_exact(pos[t[0]], pos[t[1]], pos[t[2]], pos[t[3]]);
+    const Sign s = verification_orient(pos[t[0]], pos[t[1]], pos[t[2]], pos[t[3]]);
     if (s == Sign::positive) continue;
     (s == Sign::zero ? c.zero : c.negative) += 1;
     if (c.first_bad == SIZE_MAX) {
@@ -90,8 +158,8 @@ class BoundaryTiling {
     const PlaneTriangle& t = input_[k];
     R3 r[3];
     for (int i = 0; i < 3; ++i) {
+      if (!contains(t, pos_[f[i]])) return false;
       r[i] = coords(pos_[f[i]]);
-      if (!contains(t, pos_[f[i]], r[i])) return false;
     }
     const Rational a = projected_area(r[0], r[1], r[2], t.drop);
     if (sgn(a) != t.sign) return false;
@@ -101,7 +169,7 @@ class BoundaryTiling {
   bool fits(std::size_t k, const topology::Triangle& f) const {
     const PlaneTriangle& t = input_[k];
     for (int i = 0; i < 3; ++i)
-      if (!contains(t, pos_[f[i]], coords(pos_[f[i]]))) return false;
+      if (!contains(t, pos_[f[i]])) return false;
     return true;
   }
   // First input triangle whose pieces do not add up to its area, or SIZE_MAX.

@@ -43,6 +43,10 @@ struct VerificationInput {
   const std::vector<HPoint>* boundary_positions = nullptr;  // prescribed, one per boundary vertex
 };
 
+// The orientation the verifier uses (sign of det[b-a, c-a, d-a]): a static double filter of its
+// own when every coordinate is a double, else the exact homogeneous determinant. Exact.
+Sign verification_orient(const HPoint& a, const HPoint& b, const HPoint& c, const HPoint& d);
+
 MapVerification verify_map(const VerificationInput& input, const std::vector<topology::Tet>& tets,
                            const std::vector<HPoint>& source, const std::vector<HPoint>& target);
 

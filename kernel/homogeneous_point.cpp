@@ -52,6 +52,7 @@ Rational HPoint::coordinate(int axis) const {
 }
 
 std::array<double, 3> HPoint::approx() const {
+  if (is_double_) return {box_[0].lo, box_[1].lo, box_[2].lo};  // the cache holds the values themselves
   std::array<double, 3> a;
   for (int i = 0; i < 3; ++i) a[i] = to_double(coordinate(i));
   return a;

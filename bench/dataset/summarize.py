@@ -4,7 +4,14 @@
 slowest cases, the failures, and a cumulative-time SVG like the paper's Fig. 14 (share of cases
 finished within t seconds, log scale).
 
-Usage: bench/dataset/summarize.py DATASET_DIR RESULTS_DIR [--svg OUT.svg]
+With several RESULTS_DIRs (runs of the same dataset with different `cmx map --arith`, e.g.
+CMX_MAP_OPTIONS="--arith double" bench/dataset/run.sh ...), a first table has one row per run:
+success rate, how many runs lost validity, in which operation, how far into the run (expansions
+done at the loss / expansions of the first run's success on that case: give the exact run first)
+and how many bits the exact position had there. The other
+tables describe the first RESULTS_DIR.
+
+Usage: bench/dataset/summarize.py DATASET_DIR RESULTS_DIR [RESULTS_DIR...] [--svg OUT.svg]
 Standard library only.
 """
 import json
@@ -60,6 +67,39 @@ def row(label, cases):
         fmt(median(rss), ".0f"), fmt(max(rss) if rss else None, ".0f"))
 
 
+def expansions(rep):
+    e = rep["expansion"]
+    return e["simple"] + e["star_shapified"] + e["inflated"] + e["automatic"]
+
+
+def arith_row(cases, reference):
+    """reference: name -> report of the first run (exact), to place each loss within its run."""
+    reps = [c["report"] for c in cases if c["report"]]
+    label = next((r["options"].get("arith", "rational") for r in reps), "?")
+    n = len(cases)
+    done = sum(1 for r in reps if r["status"] == "success")
+    dbl = sum(1 for r in reps if r["status"] == "success" and r["verdict"].get("double_valid"))
+    lost = [r for r in reps if r["status"] == "precision_lost"]
+    other = n - done - len(lost)
+    phases = {}
+    for r in lost:
+        ph = r["precision_loss"]["phase"]
+        phases[ph] = phases.get(ph, 0) + 1
+    where = ", ".join("%s %d" % kv for kv in sorted(phases.items(), key=lambda kv: -kv[1])) or "-"
+    progress = []
+    for c in cases:
+        r, ref = c["report"], reference.get(c["name"])
+        if r and r["status"] == "precision_lost" and ref and ref["status"] == "success" and expansions(ref):
+            progress.append(r["precision_loss"]["step"] / expansions(ref))
+    thick = [c for c in cases if c["category"] == "thick"]
+    thick_done = sum(1 for c in thick if c["report"] and c["report"]["status"] == "success")
+    bits = [r["precision_loss"]["exact_bits"] for r in lost if r["precision_loss"]["exact_bits"]]
+    return "| %s | %d | %d (%.1f %%) | %d / %d | %d (%.1f %%) | %d | %d | %s | %s | %s |" % (
+        label, n, done, 100 * done / n if n else 0, thick_done, len(thick), dbl, 100 * dbl / n if n else 0,
+        len(lost), other, where,
+        fmt(median(progress), ".2f"), fmt(median(bits), ".0f"))
+
+
 def cumulative_svg(cases, path, limit):
     times = sorted(c["report"]["seconds"]["total"] for c in cases
                    if c["report"] and c["report"]["status"] == "success")
@@ -103,9 +143,18 @@ def main(argv):
     if len(argv) < 3:
         print(__doc__, file=sys.stderr)
         return 2
-    dataset, results = argv[1], argv[2]
     svg = argv[argv.index("--svg") + 1] if "--svg" in argv else None
-    cases = load(dataset, results)
+    dirs = [a for i, a in enumerate(argv[1:], 1) if a != "--svg" and argv[i - 1] != "--svg"]
+    dataset, runs = dirs[0], dirs[1:]
+    if len(runs) > 1:
+        print("| arith | n | verified success | thick | double valid | precision lost | time limit or stuck "
+              "| lost in (operation: cases) | median progress at loss | median exact bits at loss |")
+        print("|---|---|---|---|---|---|---|---|---|---|")
+        reference = {c["name"]: c["report"] for c in load(dataset, runs[0]) if c["report"]}
+        for results in runs:
+            print(arith_row(load(dataset, results), reference))
+        print()
+    cases = load(dataset, runs[0])
     print("| cases | n | exact success | double valid | median s / input tet | max s / input tet "
           "| growth mean / max | max bits median / max | peak MiB median / max |")
     print("|---|---|---|---|---|---|---|---|---|")
