@@ -97,6 +97,7 @@ struct MapStatistics {
   std::size_t chebyshev_moves = 0;            // exact positions changed by the Chebyshev pass
   std::size_t snap_exact_rounds = 0, snap_repaired = 0, snap_rounds = 0;
   std::size_t lps = 0, lps_certified = 0, lps_fell_back = 0;
+  std::size_t lp_float_guesses = 0;           // cones classified simple by a float LP alone (placed when popped)
   // Output.
   std::size_t output_vertices = 0, output_tets = 0;
   double growth_ratio = 0;                    // output / input vertices (preprocessing included)

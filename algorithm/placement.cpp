@@ -98,6 +98,12 @@ void round_to_arith(const std::vector<lp::HalfSpace>& h, const lp::Point3& centr
 
 }  // namespace
 
+bool surely_open(const ExpansionCone& cone, const PlacementOptions& options) {
+  if (cone.degenerate || options.lp.backend != "certified") return false;
+  const lp::FloatChebyshev g = lp::float_chebyshev(lp_halfspaces(cone), options.lp);
+  return g.optimal && g.radius > 1e-6 * g.scale;
+}
+
 Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& options, const HPoint* segment_from,
                         const HPoint* segment_to) {
   Placement out;

@@ -43,6 +43,12 @@ struct Placement {
   bool ok() const { return status == lp::ChebyshevStatus::interior; }
 };
 
+// True when the float simplex alone finds the cone's kernel clearly open (radius above 1e-6 of
+// the rows' scale) and the backend is the certified one: the cone will almost surely be simply
+// expandable. A guess for ordering only (no certificate, cheap); place_in_cone decides. False
+// also means "do not know".
+bool surely_open(const ExpansionCone& cone, const PlacementOptions& options);
+
 // Solves the cone's Chebyshev LP and reduces precision. `segment_from`/`segment_to` (optional)
 // give the segment of the segment policy (p_c and the witness).
 Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& options,

@@ -1,6 +1,10 @@
 #include "lp/chebyshev_center.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "lp/backend_registry.hpp"
+#include "lp/float_simplex.hpp"
 
 namespace cmx::lp {
 
@@ -61,6 +65,20 @@ ChebyshevResult chebyshev_center(const std::vector<HalfSpace>& halfspaces, const
   res.radius = res.lp.x[3];
   res.status = sgn(res.radius) > 0 ? ChebyshevStatus::interior : ChebyshevStatus::empty_interior;
   return res;
+}
+
+FloatChebyshev float_chebyshev(const std::vector<HalfSpace>& halfspaces, const ChebyshevOptions& options) {
+  FloatChebyshev out;
+  bool zero_infeasible = false;
+  const Problem p = chebyshev_problem(halfspaces, options, nullptr, &zero_infeasible);
+  if (zero_infeasible) return out;
+  const FloatForm form = float_form(p);
+  const FloatResult r = float_simplex(form);
+  if (r.kind != FloatResult::Kind::optimal) return out;
+  out.optimal = true;
+  out.radius = r.value;  // the objective is r itself (coefficient 1, not rescaled)
+  for (double h : form.h) out.scale = std::max(out.scale, std::fabs(h));
+  return out;
 }
 
 namespace {

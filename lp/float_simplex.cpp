@@ -127,7 +127,10 @@ FloatResult float_simplex(const FloatForm& form) {
   const detail::EngineStatus s = e.solve({}, int(20 + 10 * (R + n)));
   res.pivots = e.pivots();
   switch (s) {
-    case detail::EngineStatus::optimal: res.kind = FloatResult::Kind::optimal; break;
+    case detail::EngineStatus::optimal:
+      res.kind = FloatResult::Kind::optimal;
+      res.value = e.at(0, 0);
+      break;
     case detail::EngineStatus::infeasible: res.kind = FloatResult::Kind::infeasible; break;
     case detail::EngineStatus::unbounded: res.kind = FloatResult::Kind::unbounded; break;
     case detail::EngineStatus::failed: res.kind = FloatResult::Kind::failed; break;

@@ -27,7 +27,8 @@ FloatForm float_form(const Problem& p);
 
 struct FloatResult {
   enum class Kind { optimal, infeasible, unbounded, failed } kind = Kind::failed;
-  Basis basis;  // the final basis (meaningful for optimal)
+  Basis basis;       // the final basis (meaningful for optimal)
+  double value = 0;  // objective value of that basis (optimal only), for the scaled objective c
   int pivots = 0;
 };
 FloatResult float_simplex(const FloatForm& form);

@@ -1,6 +1,10 @@
 // Chebyshev centres with exact known answers, on every backend.
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <random>
+
+#include "arith/rounding.hpp"
 #include "lp/chebyshev_center.hpp"
 #include "lp/row_weights.hpp"
 #include "lp_test_util.hpp"
@@ -131,4 +135,26 @@ TEST_CASE("l2-upper weights are rigorous upper bounds") {
   CHECK(parse_norm("l2-upper") == Norm::l2_upper);
   CHECK(parse_norm("l1") == Norm::l1);
   CHECK_FALSE(parse_norm("linf"));
+}
+
+TEST_CASE("the float Chebyshev guess is close to the certified radius, and flat kernels guess about zero") {
+  std::mt19937_64 rng(77);
+  int compared = 0;
+  for (int rep = 0; rep < 200; ++rep) {
+    const auto h = cmx::lp::test::random_kernel(rng, 8 + std::size_t(rep % 40), 30);
+    const ChebyshevResult exact = chebyshev_center(h);
+    if (exact.status != ChebyshevStatus::interior) continue;  // some random kernels are unbounded
+    ++compared;
+    const FloatChebyshev guess = float_chebyshev(h);
+    REQUIRE(guess.optimal);
+    const double r = to_double(exact.radius);
+    CHECK(std::fabs(guess.radius - r) <= 1e-9 * std::max(r, guess.scale));
+  }
+  CHECK(compared > 100);
+  // The unit cube squeezed to the plane z = 0: no interior; the guess is zero up to rounding.
+  std::vector<HalfSpace> flat = {{1, 0, 0, 1}, {-1, 0, 0, 1}, {0, 1, 0, 1}, {0, -1, 0, 1}, {0, 0, 1, 0}, {0, 0, -1, 0}};
+  const FloatChebyshev g = float_chebyshev(flat);
+  REQUIRE(g.optimal);
+  CHECK(std::fabs(g.radius) <= 1e-12);
+  CHECK(chebyshev_center(flat).status == ChebyshevStatus::empty_interior);
 }
