@@ -79,7 +79,7 @@ constexpr const char* usage =
     "Exit codes: 0 mapped and verified; 2 bad command line; 3 unreadable or malformed input;\n"
     "4 not a valid problem (not a ball, boundary mismatch, degenerate or mirrored boundary);\n"
     "5 boundary not star-shaped; 6 time limit; 7 stuck; 8 precision lost (--arith double|mpfr:BITS);\n"
-    "10 internal error (please report).\n"
+    "9 an output file cannot be written (checked before computing); 10 internal error (please report).\n"
     "On any failure no output file is written (an existing one is left untouched).\n";
 
 struct Args {
@@ -221,6 +221,21 @@ void output_plan(const Args& a, std::string& stem, std::vector<std::string>& for
   formats.push_back("tmap");
   std::sort(formats.begin(), formats.end());
   formats.erase(std::unique(formats.begin(), formats.end()), formats.end());
+}
+
+// "" when every file the run may write can be created, else why not.
+std::string outputs_unwritable(const Args& a) {
+  std::vector<std::string> paths = {a.report, a.trace};
+  if (!a.out.empty()) {
+    std::string stem;
+    std::vector<std::string> formats;
+    output_plan(a, stem, formats);
+    for (const std::string& f : formats) paths.push_back(stem + "." + f);
+  }
+  for (const std::string& p : paths)
+    if (!p.empty())
+      if (std::string why = unwritable_reason(p); !why.empty()) return why;
+  return {};
 }
 
 // The snap policy the run applies: a non-exact --arith's doubles are the plain rounding.
@@ -403,6 +418,10 @@ int run(const std::vector<std::string>& argv) {
   if (std::string why = parse_args(argv, a); !why.empty()) {
     std::fprintf(stderr, "cmx map: %s\n%s", why.c_str(), usage);
     return exit_usage;
+  }
+  if (std::string why = outputs_unwritable(a); !why.empty()) {  // before minutes of computing
+    std::fprintf(stderr, "cmx map: %s\n", why.c_str());
+    return exit_write_failed;
   }
   algorithm::MapProblem problem;
   try {

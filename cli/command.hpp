@@ -17,6 +17,7 @@ enum ExitCode : int {
   exit_time_limit = 6,
   exit_stuck = 7,
   exit_precision_lost = 8,  // a run with non-exact coordinates (--arith) lost validity
+  exit_write_failed = 9,   // an output file cannot be written (checked before computing)
   exit_internal = 10,      // a bug: an invariant or verification failed
 };
 
@@ -25,6 +26,10 @@ struct Command {
   std::string_view summary;  // one line for `cmx --help`
   int (*run)(const std::vector<std::string>& args);
 };
+
+// "" when a file can be created at `path` (its directory exists and is writable), else why not.
+// Commands check their outputs with it before computing anything.
+std::string unwritable_reason(const std::string& path);
 
 // Returns true so that it can initialise a namespace-scope constant (self-registration).
 bool register_command(const Command& command);

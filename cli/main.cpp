@@ -5,6 +5,7 @@
 #include <new>
 
 #include "command.hpp"
+#include "io/io_error.hpp"
 
 namespace cmx::cli {
 
@@ -49,6 +50,11 @@ int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 2, argv + argc);
     try {
       return c.run(args);
+    } catch (const cmx::io::IoError& e) {
+      // Commands report their input errors themselves; what escapes is mostly a failed write.
+      const bool write = e.kind() == cmx::io::ErrorKind::write_failed;
+      std::fprintf(stderr, "cmx %s: %s%s\n", argv[1], write ? "cannot write output: " : "", e.what());
+      return write ? exit_write_failed : exit_bad_input;
     } catch (const std::bad_alloc&) {
       std::fprintf(stderr, "cmx %s: out of memory\n", argv[1]);
       return exit_internal;

@@ -275,3 +275,19 @@ TEST_CASE("cmx map --arith: double maps and verifies, too few bits exits 8 sayin
     CHECK(r.err.find("rational, double or mpfr:BITS") != std::string::npos);
   }
 }
+
+TEST_CASE("cmx map: an output that cannot be written exits 9 before computing, naming the path") {
+  const Case c = make_case("grid:3,3,3", "tet");
+  fs::create_directories(c.dir + "/sub.tmap");  // an output path that is a directory
+  for (const std::vector<std::string>& where :
+       {std::vector<std::string>{"-o", c.dir + "/missing/out"}, std::vector<std::string>{"--report", c.dir + "/missing/r.json"},
+        std::vector<std::string>{"--trace", c.dir + "/missing/t.csv"}, std::vector<std::string>{"-o", c.dir + "/sub.tmap"}}) {
+    CAPTURE(where[1]);
+    std::vector<std::string> args = {"map", c.mesh, "--boundary", c.boundary};
+    args.insert(args.end(), where.begin(), where.end());
+    const auto r = run_cmx(args);
+    CHECK(r.exit_code == 9);
+    CHECK(r.err.find("cannot write") != std::string::npos);
+    CHECK(r.out.find("map: success") == std::string::npos);  // nothing was computed
+  }
+}
