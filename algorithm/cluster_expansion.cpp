@@ -208,16 +208,18 @@ class ClusterExpander {
       kind = Kind::automatic;
     } else {
       if (!st.expandable) return;
-      const ExpansionCone cone = gather_expansion_cone(e_, v);
-      if (cone.base_tets == 0) {
+      const FloatCone guess = float_expansion_cone(e_, v);
+      if (guess.base_tets == 0) {
         kind = Kind::inflate;
-      } else if (!guess_wrong_[v] && surely_open(cone, s_.placement)) {
-        // The certified LP and the precision reduction run when v is popped, once, instead of at
-        // every re-evaluation (about five per expansion): the same position, a fraction of the
-        // cost. Should the guess be wrong there, v is classified exactly from then on.
+      } else if (!guess_wrong_[v] && surely_open(guess, s_.placement)) {
+        // The exact cone, the certified LP and the precision reduction run when v is popped,
+        // once, instead of at every re-evaluation (about five per expansion): the same position,
+        // a fraction of the cost. Should the guess be wrong there, v is classified exactly from
+        // then on.
         kind = Kind::simple;
         ++stats_.lp_float_guesses;
       } else {
+        const ExpansionCone cone = gather_expansion_cone(e_, v);
         Placement p = place(cone, nullptr);
         if (p.ok()) {
           kind = Kind::simple;

@@ -22,6 +22,23 @@ ExpansionCone gather_expansion_cone(const Embedding& e, VertexId v) {
   return cone;
 }
 
+FloatCone float_expansion_cone(const Embedding& e, VertexId v) {
+  FloatCone cone;
+  for (TetId t : e.mesh.tets_of(v)) {
+    const topology::Tet& tet = e.mesh.tet(t);
+    const int others = e.unexpanded_count(tet) - (e.unexpanded[v] ? 1 : 0);
+    if (others >= 2) continue;
+    const topology::Triangle f = topology::tet_face(tet, topology::local_index(tet, v));
+    const auto p = e.target[f[0]].approx(), q = e.target[f[1]].approx(), r = e.target[f[2]].approx();
+    // Inner side of (p, q, r): orient3d(p, q, r, x) < 0, i.e. n . x < n . p with n = (q-p) x (r-p).
+    const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    cone.rows.push_back({n[0], n[1], n[2], n[0] * p[0] + n[1] * p[1] + n[2] * p[2]});
+    if (others == 0) ++cone.base_tets;
+  }
+  return cone;
+}
+
 std::vector<lp::HalfSpace> lp_halfspaces(const ExpansionCone& cone) {
   std::vector<lp::HalfSpace> out;
   out.reserve(cone.halfspaces.size());

@@ -11,6 +11,7 @@
 // Near p_c the base constraints are slack (the base tets are positive with v at p_c), so the
 // kernel has interior exactly when the side planes, all through p_c, leave an open cone of
 // directions: that is what star-shapification (star_shapify.hpp) restores.
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -33,6 +34,14 @@ struct ExpansionCone {
 // For an expanded vertex the same constraints describe where it may move (its star's kernel,
 // cluster vertices at p_c): used to re-centre neighbours of the cluster.
 ExpansionCone gather_expansion_cone(const Embedding& e, VertexId v);
+
+// The same constraints in doubles, from the nearest doubles of the positions (rows a x + b y +
+// c z <= d; a zero row for a collinear face): cheap, inexact, for classification guesses only.
+struct FloatCone {
+  std::vector<std::array<double, 4>> rows;
+  std::size_t base_tets = 0;
+};
+FloatCone float_expansion_cone(const Embedding& e, VertexId v);
 
 // The cone's constraints as LP half-spaces a x + b y + c z <= d.
 std::vector<lp::HalfSpace> lp_halfspaces(const ExpansionCone& cone);

@@ -98,9 +98,9 @@ void round_to_arith(const std::vector<lp::HalfSpace>& h, const lp::Point3& centr
 
 }  // namespace
 
-bool surely_open(const ExpansionCone& cone, const PlacementOptions& options) {
-  if (cone.degenerate || options.lp.backend != "certified") return false;
-  const lp::FloatChebyshev g = lp::float_chebyshev(lp_halfspaces(cone), options.lp);
+bool surely_open(const FloatCone& cone, const PlacementOptions& options) {
+  if (options.lp.backend != "certified") return false;
+  const lp::FloatChebyshev g = lp::float_chebyshev(cone.rows);
   return g.optimal && g.radius > 1e-6 * g.scale;
 }
 

@@ -47,7 +47,7 @@ struct Placement {
 // the rows' scale) and the backend is the certified one: the cone will almost surely be simply
 // expandable. A guess for ordering only (no certificate, cheap); place_in_cone decides. False
 // also means "do not know".
-bool surely_open(const ExpansionCone& cone, const PlacementOptions& options);
+bool surely_open(const FloatCone& cone, const PlacementOptions& options);
 
 // Solves the cone's Chebyshev LP and reduces precision. `segment_from`/`segment_to` (optional)
 // give the segment of the segment policy (p_c and the witness).

@@ -67,17 +67,36 @@ ChebyshevResult chebyshev_center(const std::vector<HalfSpace>& halfspaces, const
   return res;
 }
 
-FloatChebyshev float_chebyshev(const std::vector<HalfSpace>& halfspaces, const ChebyshevOptions& options) {
+FloatChebyshev float_chebyshev(const std::vector<std::array<double, 4>>& halfspaces) {
+  // The FloatForm of chebyshev_problem directly: rows (a, b, c, w) . (x, y, z, r) <= d and the
+  // bound -r <= 0, each scaled to a unit coefficient vector; objective r.
+  FloatForm f;
+  f.n = 4;
+  auto add = [&](double a, double b, double c, double w, double d) {
+    const double norm = std::sqrt(a * a + b * b + c * c + w * w);
+    if (!(norm > 0) || !std::isfinite(norm) || !std::isfinite(d)) return false;
+    f.ids.push_back(f.ids.size());
+    for (double x : {a, b, c, w}) f.g.push_back(x / norm);
+    f.h.push_back(d / norm);
+    f.filterable.push_back(0);
+    return true;
+  };
   FloatChebyshev out;
-  bool zero_infeasible = false;
-  const Problem p = chebyshev_problem(halfspaces, options, nullptr, &zero_infeasible);
-  if (zero_infeasible) return out;
-  const FloatForm form = float_form(p);
-  const FloatResult r = float_simplex(form);
+  for (const auto& h : halfspaces) {
+    const double w = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+    if (w == 0) {
+      if (h[3] < 0) return out;  // 0 <= d < 0: empty
+      continue;
+    }
+    if (!add(h[0], h[1], h[2], w, h[3])) return out;
+  }
+  for (double h : f.h) out.scale = std::max(out.scale, std::fabs(h));
+  add(0, 0, 0, -1, 0);
+  f.c = {0, 0, 0, 1};
+  const FloatResult r = float_simplex(f);
   if (r.kind != FloatResult::Kind::optimal) return out;
   out.optimal = true;
-  out.radius = r.value;  // the objective is r itself (coefficient 1, not rescaled)
-  for (double h : form.h) out.scale = std::max(out.scale, std::fabs(h));
+  out.radius = r.value;  // the objective is r itself (coefficient 1)
   return out;
 }
 

@@ -50,15 +50,15 @@ Problem chebyshev_problem(const std::vector<HalfSpace>& halfspaces, const Chebys
 // backend cannot take the data.
 ChebyshevResult chebyshev_center(const std::vector<HalfSpace>& halfspaces, const ChebyshevOptions& options = {});
 
-// A guess from the float simplex alone, no certificate: the Chebyshev radius the certified
-// backend would find, up to rounding, and the largest |right-hand side| of the unit-normalised
-// rows (the scale against which the radius means something). For cheap classification only:
-// positions always come from chebyshev_center.
+// A guess from the float simplex alone, no certificate: the Chebyshev radius of the half-spaces
+// a x + b y + c z <= d given in doubles (weights |(a, b, c)|_2 in doubles), up to rounding, and
+// the largest |d| / |(a, b, c, |(a, b, c)|)| (the scale against which the radius means something).
+// For cheap classification only: positions always come from chebyshev_center.
 struct FloatChebyshev {
   bool optimal = false;  // the float simplex reached an optimum
   double radius = 0, scale = 0;
 };
-FloatChebyshev float_chebyshev(const std::vector<HalfSpace>& halfspaces, const ChebyshevOptions& options = {});
+FloatChebyshev float_chebyshev(const std::vector<std::array<double, 4>>& halfspaces);
 
 // Exact test: a x + b y + c z < d for every half-space (zero rows with d >= 0, being all of
 // space, count as strictly satisfied).

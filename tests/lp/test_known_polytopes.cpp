@@ -145,7 +145,9 @@ TEST_CASE("the float Chebyshev guess is close to the certified radius, and flat 
     const ChebyshevResult exact = chebyshev_center(h);
     if (exact.status != ChebyshevStatus::interior) continue;  // some random kernels are unbounded
     ++compared;
-    const FloatChebyshev guess = float_chebyshev(h);
+    std::vector<std::array<double, 4>> rows;
+    for (const HalfSpace& x : h) rows.push_back({to_double(x.a), to_double(x.b), to_double(x.c), to_double(x.d)});
+    const FloatChebyshev guess = float_chebyshev(rows);
     REQUIRE(guess.optimal);
     const double r = to_double(exact.radius);
     CHECK(std::fabs(guess.radius - r) <= 1e-9 * std::max(r, guess.scale));
@@ -153,7 +155,7 @@ TEST_CASE("the float Chebyshev guess is close to the certified radius, and flat 
   CHECK(compared > 100);
   // The unit cube squeezed to the plane z = 0: no interior; the guess is zero up to rounding.
   std::vector<HalfSpace> flat = {{1, 0, 0, 1}, {-1, 0, 0, 1}, {0, 1, 0, 1}, {0, -1, 0, 1}, {0, 0, 1, 0}, {0, 0, -1, 0}};
-  const FloatChebyshev g = float_chebyshev(flat);
+  const FloatChebyshev g = float_chebyshev({{1, 0, 0, 1}, {-1, 0, 0, 1}, {0, 1, 0, 1}, {0, -1, 0, 1}, {0, 0, 1, 0}, {0, 0, -1, 0}});
   REQUIRE(g.optimal);
   CHECK(std::fabs(g.radius) <= 1e-12);
   CHECK(chebyshev_center(flat).status == ChebyshevStatus::empty_interior);
