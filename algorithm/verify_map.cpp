@@ -67,9 +67,9 @@ namespace {
 // of the largest normal component, so the projection is injective on its plane).
 struct PlaneTriangle {
   HPoint a, b, c;
-  R3 ra, rb, rc;
   int drop = 2;
-  int sign = 0;  // sign of its projected area
+  int sign = 0;   // sign of its projected area
+  Rational area;  // its projected area (times 2)
 };
 
 // Signed area (times 2) of (p, q, r) projected by dropping axis `drop`.
@@ -78,16 +78,26 @@ Rational projected_area(const R3& p, const R3& q, const R3& r, int drop) {
   return (q[i] - p[i]) * (r[j] - p[j]) - (q[j] - p[j]) * (r[i] - p[i]);
 }
 
+// The projection drops the axis of the largest normal component (estimated in doubles; any axis
+// whose exact projected area is nonzero is injective on the triangle's plane, and the exact area
+// decides: when the estimate's axis gives zero, the others are tried).
 PlaneTriangle make_triangle(const HPoint& a, const HPoint& b, const HPoint& c) {
-  PlaneTriangle t{a, b, c, coords(a), coords(b), coords(c)};
-  Rational best = 0;
+  PlaneTriangle t{a, b, c, 2, 0, Rational(0)};
+  const auto pa = a.approx(), pb = b.approx(), pc = c.approx();
+  double n[3];
   for (int d = 0; d < 3; ++d) {
-    Rational s = projected_area(t.ra, t.rb, t.rc, d);
-    if (abs(s) > best) {
-      best = abs(s);
-      t.drop = d;
-      t.sign = sgn(s);
-    }
+    const int i = d == 0 ? 1 : 0, j = d == 2 ? 1 : 2;
+    n[d] = std::fabs((pb[std::size_t(i)] - pa[std::size_t(i)]) * (pc[std::size_t(j)] - pa[std::size_t(j)]) -
+                     (pb[std::size_t(j)] - pa[std::size_t(j)]) * (pc[std::size_t(i)] - pa[std::size_t(i)]));
+  }
+  int order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](int x, int y) { return n[x] > n[y]; });
+  const R3 ra = coords(a), rb = coords(b), rc = coords(c);
+  for (int d : order) {
+    t.area = projected_area(ra, rb, rc, d);
+    t.drop = d;
+    t.sign = sgn(t.area);
+    if (t.sign != 0) break;
   }
   return t;
 }
@@ -175,7 +185,7 @@ class BoundaryTiling {
   // First input triangle whose pieces do not add up to its area, or SIZE_MAX.
   std::size_t first_uncovered() const {
     for (std::size_t k = 0; k < input_.size(); ++k)
-      if (area_[k] != projected_area(input_[k].ra, input_[k].rb, input_[k].rc, input_[k].drop)) return k;
+      if (area_[k] != input_[k].area) return k;
     return SIZE_MAX;
   }
 
