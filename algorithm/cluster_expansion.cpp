@@ -7,6 +7,7 @@
 #include <tuple>
 #include <unordered_map>
 
+#include "algorithm/collapse_pass.hpp"
 #include "algorithm/cone_base.hpp"
 #include "algorithm/expansion_cone.hpp"
 #include "algorithm/invariants.hpp"
@@ -274,7 +275,8 @@ class ClusterExpander {
       case Kind::inflate:
         // A failure changes nothing that matters for v: it waits until its star changes.
         label_ = entry.kind == Kind::inflate ? "inflation" : "star-shapified";
-        if (!refine_and_expand(v, 0)) ++failures_;
+        if (const std::size_t before = e_.num_vertices(); !refine_and_expand(v, 0)) ++failures_;
+        else if (s_.collapse_after_refinement) collapse_added_since(before);
         return;
     }
   }
@@ -356,6 +358,23 @@ class ClusterExpander {
     --cluster_;
     ++version_[x];
     dirty_star(c);
+  }
+
+  // --- post-star-shapification collapses (paper Sec. 4.2.2) ---------------------------------
+  // The refinement that expanded a vertex is conservative: of the vertices it added, those now
+  // expanded are collapsed into an expanded neighbour wherever every invariant survives, so that
+  // the next cones do not inherit them.
+  void collapse_added_since(std::size_t first) {
+    grow();
+    for (std::size_t g = e_.num_vertices(); g-- > first;) {
+      if (e_.mesh.tets_of(VertexId(g)).empty()) continue;
+      const std::optional<VertexId> keep = try_collapse(e_, VertexId(g));
+      if (!keep) continue;
+      ++stats_.refinement_collapses;
+      ++version_[g];
+      dirty_star(*keep);
+      if (s_.check) check_all("after collapsing vertex " + std::to_string(g));
+    }
   }
 
   // --- smoothing (paper Sec. 4.2.4) -------------------------------------------------------------

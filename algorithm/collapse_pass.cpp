@@ -9,27 +9,31 @@ namespace cmx::algorithm {
 
 namespace {
 
-// Every tet around `gone` that does not contain `keep` stays strictly positive, in the source and
-// in the target, with `gone` replaced by `keep`.
+// Every tet around `gone` that does not contain `keep`, with `gone` replaced by `keep`, keeps the
+// invariants: strictly positive in the source, and in the target unless it has two or more
+// cluster vertices (degenerate by design; none are left at the end of a run).
 bool collapse_keeps_map_valid(const Embedding& e, VertexId keep, VertexId gone) {
   for (TetId t : e.mesh.tets_of(gone)) {
     topology::Tet x = e.mesh.tet(t);
     if (topology::contains(x, keep)) continue;
     x[topology::local_index(x, gone)] = keep;
-    if (e.orient_target(x) != Sign::positive || e.orient_source(x) != Sign::positive) return false;
+    if (e.orient_source(x) != Sign::positive) return false;
+    if (e.unexpanded_count(x) <= 1 && e.orient_target(x) != Sign::positive) return false;
   }
   return true;
 }
 
-bool try_collapse(Embedding& e, VertexId gone) {
-  for (VertexId keep : topology::vertex_neighbors(e.mesh, gone)) {
-    if (!collapse_keeps_map_valid(e, keep, gone)) continue;
-    if (topology::collapse_edge(e.mesh, keep, gone).ok) return true;
-  }
-  return false;
-}
-
 }  // namespace
+
+std::optional<VertexId> try_collapse(Embedding& e, VertexId gone) {
+  if (e.unexpanded[gone]) return std::nullopt;
+  for (VertexId keep : topology::vertex_neighbors(e.mesh, gone)) {
+    // Into an expanded vertex only: the cluster mesh (simplices of cluster vertices) is untouched.
+    if (e.unexpanded[keep] || !collapse_keeps_map_valid(e, keep, gone)) continue;
+    if (topology::collapse_edge(e.mesh, keep, gone).ok) return keep;
+  }
+  return std::nullopt;
+}
 
 void compact_vertices(Embedding& e, std::size_t input_vertices) {
   const std::size_t n = e.num_vertices();

@@ -6,10 +6,17 @@
 // Added vertices are interior, so the boundary is untouched. The collapsed vertices are removed
 // and the remaining added vertices renumbered; input vertices keep their ids.
 #include <cstddef>
+#include <optional>
 
 #include "algorithm/embedding.hpp"
 
 namespace cmx::algorithm {
+
+// Collapses the expanded vertex `gone` into an expanded neighbour when that keeps every invariant
+// (link condition; rewritten tets positive in the source, and in the target unless they have two
+// or more cluster vertices). Valid mid-run: the cluster mesh does not change. Returns the
+// neighbour kept, or nullopt (nothing changed).
+std::optional<VertexId> try_collapse(Embedding& e, VertexId gone);
 
 // Precondition: no cluster vertex left. `input_vertices`: the ids below it are never removed.
 // Returns the number of vertices removed.

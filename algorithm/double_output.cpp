@@ -47,10 +47,15 @@ bool recentre(Embedding& e, VertexId v, const PlacementOptions& options) {
 
 }  // namespace
 
-ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options) {
+namespace {
+bool passed(const Deadline& deadline) { return deadline && std::chrono::steady_clock::now() > *deadline; }
+}  // namespace
+
+ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options, const Deadline& deadline) {
   ChebyshevPassResult r;
   for (VertexId v = 0; v < e.num_vertices(); ++v) {
     if (e.boundary[v] || e.unexpanded[v] || e.mesh.tets_of(v).empty()) continue;
+    if (r.lps % 64 == 0 && passed(deadline)) break;
     ++r.lps;
     if (recentre(e, v, options)) ++r.moved;
   }
@@ -171,11 +176,12 @@ std::size_t local_exact_round(Embedding& e, const std::vector<VertexId>& offende
 // doubles) with `rescan()` after each, until the doubles are valid, a round moves nothing, `cap`
 // rounds, or `patience` rounds without fewer bad tets.
 template <class Round, class Rescan>
-void repair_rounds(Scan& now, std::size_t& rounds, std::size_t cap, Round round, Rescan rescan) {
+void repair_rounds(Scan& now, std::size_t& rounds, std::size_t cap, const Deadline& deadline, Round round,
+                   Rescan rescan) {
   constexpr std::size_t patience = 3;
   auto bad = [](const DoubleCheck& c) { return c.inverted + c.degenerate; };
   std::size_t best = bad(now.check), stale = 0;
-  while (rounds < cap && !now.check.valid() && stale < patience) {
+  while (rounds < cap && !now.check.valid() && stale < patience && !passed(deadline)) {
     ++rounds;
     const std::size_t moved = round(now.offenders);
     now = rescan();
@@ -194,12 +200,10 @@ std::vector<std::array<double, 3>> nearest_doubles(const Embedding& e) {
   return out;
 }
 
-}  // namespace
-
-DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOptions& options) {
+DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& options, const Deadline& deadline) {
   DoubleMap out;
   if (policy == SnapPolicy::chebyshev_pass || policy == SnapPolicy::repair) {
-    const ChebyshevPassResult pass = chebyshev_pass(e, options);
+    const ChebyshevPassResult pass = chebyshev_pass(e, options, deadline);
     out.chebyshev_moves = pass.moved;
     out.lps += pass.lps;
   }
@@ -213,7 +217,7 @@ DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOption
   // First in the exact map, where every move is safe (measured on tgs_100349: a crowd of vertices
   // within 1e-19 of each other does not open in 32 rounds); then among the doubles themselves.
   repair_rounds(
-      now, out.exact_rounds, 32,
+      now, out.exact_rounds, 32, deadline,
       [&](const std::vector<VertexId>& offenders) {
         const std::size_t moved = local_exact_round(e, offenders, options, out.lps);
         out.chebyshev_moves += moved;
@@ -234,7 +238,7 @@ DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOption
   d.target.reserve(e.num_vertices());
   for (const auto& q : out.target) d.target.push_back(HPoint::from_doubles(q[0], q[1], q[2]));
   repair_rounds(
-      now, out.rounds, 16,
+      now, out.rounds, 16, deadline,
       [&](const std::vector<VertexId>& offenders) {
         const std::size_t moved = repair_round(d, offenders, out.target, options, out.lps);
         out.repaired += moved;
@@ -242,6 +246,15 @@ DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOption
       },
       [&] { return scan(d, out.target); });
   out.check = now.check;
+  return out;
+}
+
+}  // namespace
+
+DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOptions& options,
+                          const Deadline& deadline) {
+  DoubleMap out = snap_doubles(e, policy, options, deadline);
+  out.stopped_at_deadline = out.checked && !out.check.valid() && passed(deadline);
   return out;
 }
 

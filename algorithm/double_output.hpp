@@ -20,6 +20,7 @@
 // position is not a double the double map's boundary differs from it by that rounding; a tet of
 // boundary vertices only that the rounding flattens cannot be repaired).
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <optional>
 #include <string_view>
@@ -42,7 +43,9 @@ struct ChebyshevPassResult {
 
 // The Gauss-Seidel pass on the exact map (no cluster vertex left). Vertices with boundary[v] set
 // never move.
-ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options);
+// Past `deadline` (when given) the pass stops: every move made kept the map valid.
+using Deadline = std::optional<std::chrono::steady_clock::time_point>;
+ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options, const Deadline& deadline = {});
 
 struct DoubleMap {
   bool checked = false;                       // false for SnapPolicy::none
@@ -53,11 +56,14 @@ struct DoubleMap {
   std::size_t repaired = 0;                   // re-centrings among the doubles (a vertex may count twice)
   std::size_t rounds = 0;                     // repair rounds among the doubles
   std::size_t lps = 0;
+  bool stopped_at_deadline = false;           // the pass or repair stopped at the time limit
 };
 
 // Runs `policy` on the finished exact map `e` (no cluster vertex left) and returns the doubles.
 // chebyshev-pass and repair move exact positions, each move inside the kernel of the vertex's
-// star, so the exact map stays valid (it is verified after this, independently).
-DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOptions& options);
+// star, so the exact map stays valid (it is verified after this, independently). Past `deadline`
+// the pass and the repair stop where they are: the doubles are then checked as they stand.
+DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOptions& options,
+                          const Deadline& deadline = {});
 
 }  // namespace cmx::algorithm

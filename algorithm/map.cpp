@@ -132,6 +132,7 @@ ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_poin
   settings.progress = options.progress;
   settings.trace = options.trace;
   settings.smooth_every = options.smooth_every;
+  settings.collapse_after_refinement = options.collapse_refinement;
   settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior
   settings.input_vertices = input_vertices;
   settings.vertex_budget = std::max<std::size_t>(200000, 50 * input_vertices);
@@ -143,9 +144,12 @@ SnapPolicy snap_policy(const MapOptions& options) {
   return options.placement.arith.exact() ? options.snap : SnapPolicy::nearest;
 }
 
-void make_doubles(Embedding& e, const MapOptions& options, MapResult& r) {
+void make_doubles(Embedding& e, const MapOptions& options, Clock::time_point start, MapResult& r) {
   MapStatistics& s = r.stats;
-  r.doubles = make_double_map(e, snap_policy(options), options.placement);
+  Deadline deadline;
+  if (options.time_limit_seconds > 0)
+    deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
+  r.doubles = make_double_map(e, snap_policy(options), options.placement, deadline);
   s.chebyshev_moves = r.doubles.chebyshev_moves;
   s.snap_exact_rounds = r.doubles.exact_rounds;
   s.snap_repaired = r.doubles.repaired;
@@ -174,7 +178,7 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
   compact_vertices(e, s.input_vertices);  // vertices collapsed away, or inflation splits undone
   if (out.outcome == MapOutcome::success) {
     phase = Clock::now();
-    make_doubles(e, options, r);
+    make_doubles(e, options, start, r);
     s.seconds_double = seconds_since(phase);
   }
   fill_output(e, r);

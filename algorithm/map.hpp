@@ -66,6 +66,7 @@ struct MapOptions {
   bool collapse = true;                       // collapse added vertices when the map stays valid
   SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/double_output.hpp)
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
+  bool collapse_refinement = false;           // collapse what each star-shapification added, at once (Sec. 4.2.2)
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
   // Called after every expansion when set (costs a pass over vertices and tets per row).
   std::function<void(const TraceRow&)> trace;
@@ -93,6 +94,7 @@ struct MapStatistics {
   std::size_t smoothing_moves = 0;            // Laplacian moves kept (paper Sec. 4.2.4)
   std::size_t inflation_splits = 0;
   std::size_t collapsed = 0;                  // added vertices collapsed away at the end
+  std::size_t refinement_collapses = 0;       // added vertices collapsed right after their refinement
   // Double output.
   std::size_t chebyshev_moves = 0;            // exact positions changed by the Chebyshev pass
   std::size_t snap_exact_rounds = 0, snap_repaired = 0, snap_rounds = 0;

@@ -4,6 +4,8 @@
 // repair mends.
 #include <doctest/doctest.h>
 
+#include <chrono>
+
 #include "algorithm/double_output.hpp"
 #include "algorithm/expansion_cone.hpp"
 #include "algorithm/map.hpp"
@@ -145,9 +147,20 @@ TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair
   const DoubleMap plain = make_double_map(rounded, SnapPolicy::nearest, {});
   REQUIRE_FALSE(plain.check.valid());
   CHECK(plain.check.degenerate > 0);
+  CHECK_FALSE(plain.stopped_at_deadline);
+
+  // A time limit already passed: no move is made, the doubles are checked as they stand.
+  Embedding late = e;
+  const DoubleMap stopped =
+      make_double_map(late, SnapPolicy::repair, {}, std::chrono::steady_clock::now() - std::chrono::seconds(1));
+  CHECK(stopped.stopped_at_deadline);
+  CHECK(stopped.chebyshev_moves == 0);
+  CHECK(stopped.check.degenerate == plain.check.degenerate);
+  CHECK(late.target == e.target);
 
   const DoubleMap mended = make_double_map(e, SnapPolicy::repair, {});
   CHECK(mended.check.valid());
+  CHECK_FALSE(mended.stopped_at_deadline);
   CHECK(recount(r.tets, mended.target).degenerate == 0);
   // The exact map is still valid after the exact moves repair made.
   for (TetId t : e.mesh.live_tets()) CHECK(e.orient_target(e.mesh.tet(t)) == Sign::positive);

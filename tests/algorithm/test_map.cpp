@@ -117,6 +117,15 @@ TEST_CASE("smoothing every few expansions keeps every invariant and moves vertic
   CHECK(moves > 0);
 }
 
+TEST_CASE("collapsing what each star-shapification added keeps every invariant, and collapses") {
+  MapOptions o;
+  o.collapse_refinement = true;
+  // A one-layer slab (no interior vertex) onto the tetrahedron: three star-shapifications.
+  const MapResult r = map_checked(problem_from(thin_slab(6, 5, 1, 1), "tet"), o);  // every step checked
+  CHECK(r.stats.expansions_star_shapified > 0);
+  CHECK(r.stats.refinement_collapses > 0);
+}
+
 TEST_CASE("without the final collapses every added vertex is kept, and the map is still valid") {
   const MapProblem p = problem_from(thin_slab(4, 4, 1, 1), "tet");
   MapOptions o;
