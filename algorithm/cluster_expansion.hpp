@@ -49,7 +49,7 @@ struct ExpansionSettings {
   std::size_t input_vertices = 0;
   std::size_t vertex_budget = 0;  // refinement stops (stuck) beyond this many vertices in total
   std::size_t smooth_every = 0;   // smoothing period in expansions (0: off)
-  bool collapse_after_refinement = false;  // paper Sec. 4.2.2 (MapOptions::collapse_refinement)
+  bool collapse_after_refinement = true;  // paper Sec. 4.2.2 (MapOptions::collapse_refinement)
 };
 
 struct ExpansionOutcome {

@@ -66,7 +66,7 @@ struct MapOptions {
   bool collapse = true;                       // collapse added vertices when the map stays valid
   SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/double_output.hpp)
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
-  bool collapse_refinement = false;           // collapse what each star-shapification added, at once (Sec. 4.2.2)
+  bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
   // Called after every expansion when set (costs a pass over vertices and tets per row).
   std::function<void(const TraceRow&)> trace;

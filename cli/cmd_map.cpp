@@ -36,7 +36,7 @@ constexpr const char* usage =
     "               [--no-collapse] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
     "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
-    "               [--arith rational|double|mpfr:BITS] [--quiet]\n"
+    "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--quiet]\n"
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
     "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
     "the verdict.\n"
@@ -53,6 +53,9 @@ constexpr const char* usage =
     "  --check           assert every invariant after every step (slow; for testing)\n"
     "  --no-collapse     keep every added vertex (by default added vertices are collapsed away at\n"
     "                    the end wherever the map stays valid)\n"
+    "  --no-collapse-refinement  do not collapse, right after each star-shapification, the\n"
+    "                    vertices it added (by default they are collapsed wherever every invariant\n"
+    "                    survives: paper Sec. 4.2.2)\n"
     "  --order ORDER     expansion order (default priority: paper Sec. 4.1.2)\n"
     "  --seed N          seed of random orders and of generated shapes (default 1234)\n"
     "  --precision P     precision reduction of new positions (default dyadic)\n"
@@ -184,8 +187,8 @@ std::string parse_args(const std::vector<std::string>& args, Args& a) {
       const auto n = lp::parse_norm(v);
       if (!n) return "unknown norm '" + v + "' (l2-upper, l1)";
       a.options.placement.lp.norm = *n;
-    } else if (x == "--collapse-refinement") {
-      a.options.collapse_refinement = true;
+    } else if (x == "--no-collapse-refinement") {
+      a.options.collapse_refinement = false;
     } else if (x == "--no-collapse") {
       a.options.collapse = false;
     } else if (x == "--check") {
@@ -323,6 +326,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   opt.str("arith", to_string(a.options.placement.arith));
   opt.str("snap", std::string(algorithm::to_string(snap_used(a))));
   opt.num("smooth", std::uint64_t(a.options.smooth_every));
+  opt.flag("collapse_refinement", a.options.collapse_refinement);
   opt.num("time_limit", a.time_limit);
   j.obj("options", opt);
   if (!r) return j;

@@ -118,12 +118,15 @@ TEST_CASE("smoothing every few expansions keeps every invariant and moves vertic
 }
 
 TEST_CASE("collapsing what each star-shapification added keeps every invariant, and collapses") {
-  MapOptions o;
-  o.collapse_refinement = true;
   // A one-layer slab (no interior vertex) onto the tetrahedron: three star-shapifications.
-  const MapResult r = map_checked(problem_from(thin_slab(6, 5, 1, 1), "tet"), o);  // every step checked
+  const MapProblem p = problem_from(thin_slab(6, 5, 1, 1), "tet");
+  const MapResult r = map_checked(p);  // the default; every invariant checked after every step
   CHECK(r.stats.expansions_star_shapified > 0);
   CHECK(r.stats.refinement_collapses > 0);
+  MapOptions o;
+  o.collapse_refinement = false;
+  const MapResult off = map_checked(p, o);
+  CHECK(off.stats.refinement_collapses == 0);
 }
 
 TEST_CASE("without the final collapses every added vertex is kept, and the map is still valid") {
