@@ -253,9 +253,16 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
 
 DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOptions& options,
                           const Deadline& deadline) {
+  const std::vector<HPoint> before = deadline ? e.target : std::vector<HPoint>{};
   DoubleMap out = snap_doubles(e, policy, options, deadline);
-  out.stopped_at_deadline = out.checked && !out.check.valid() && passed(deadline);
-  return out;
+  if (!out.checked || out.check.valid() || !passed(deadline)) return out;
+  // Cut short by the time limit: where it stopped depends on timing, so undo every move and give
+  // the plain rounding of the exact map as it was (the same whenever the limit is hit).
+  e.target = before;
+  DoubleMap plain = snap_doubles(e, SnapPolicy::nearest, options, {});
+  plain.stopped_at_deadline = true;
+  plain.lps = out.lps;
+  return plain;
 }
 
 }  // namespace cmx::algorithm

@@ -56,13 +56,15 @@ struct DoubleMap {
   std::size_t repaired = 0;                   // re-centrings among the doubles (a vertex may count twice)
   std::size_t rounds = 0;                     // repair rounds among the doubles
   std::size_t lps = 0;
-  bool stopped_at_deadline = false;           // the pass or repair stopped at the time limit
+  bool stopped_at_deadline = false;           // the time limit cut the repair short (moves undone)
 };
 
 // Runs `policy` on the finished exact map `e` (no cluster vertex left) and returns the doubles.
 // chebyshev-pass and repair move exact positions, each move inside the kernel of the vertex's
 // star, so the exact map stays valid (it is verified after this, independently). Past `deadline`
-// the pass and the repair stop where they are: the doubles are then checked as they stand.
+// the pass and the repair stop; unless the doubles are valid by then, every move is undone and
+// the result is the plain rounding of the exact map as it was (deterministic, unlike the point
+// where the time ran out), with stopped_at_deadline set.
 DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOptions& options,
                           const Deadline& deadline = {});
 

@@ -156,6 +156,7 @@ TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair
   CHECK(stopped.stopped_at_deadline);
   CHECK(stopped.chebyshev_moves == 0);
   CHECK(stopped.check.degenerate == plain.check.degenerate);
+  CHECK(stopped.target == plain.target);
   CHECK(late.target == e.target);
 
   const DoubleMap mended = make_double_map(e, SnapPolicy::repair, {});
