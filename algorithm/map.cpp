@@ -120,6 +120,11 @@ void preprocess(Embedding& e, const ValidatedProblem& v, const MapOptions& optio
   r.center = e.center;
 }
 
+Deadline deadline_of(const MapOptions& options, Clock::time_point start) {
+  if (options.time_limit_seconds <= 0) return std::nullopt;
+  return start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
+}
+
 ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_point start,
                                      const std::vector<HPoint>& prescribed, std::size_t input_vertices) {
   ExpansionSettings settings;
@@ -127,8 +132,7 @@ ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_poin
   settings.order = options.order;
   settings.check = options.check;
   settings.start = start;
-  if (options.time_limit_seconds > 0)
-    settings.deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
+  settings.deadline = deadline_of(options, start);
   settings.progress = options.progress;
   settings.trace = options.trace;
   settings.smooth_every = options.smooth_every;
@@ -146,10 +150,7 @@ SnapPolicy snap_policy(const MapOptions& options) {
 
 void make_doubles(Embedding& e, const MapOptions& options, Clock::time_point start, MapResult& r) {
   MapStatistics& s = r.stats;
-  Deadline deadline;
-  if (options.time_limit_seconds > 0)
-    deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
-  r.doubles = make_double_map(e, snap_policy(options), options.placement, deadline);
+  r.doubles = make_double_map(e, snap_policy(options), options.placement, deadline_of(options, start));
   s.chebyshev_moves = r.doubles.chebyshev_moves;
   s.snap_exact_rounds = r.doubles.exact_rounds;
   s.snap_repaired = r.doubles.repaired;

@@ -27,6 +27,14 @@ std::string tet_text(const topology::Tet& t) { return ids_text(t); }
 // permanent (eps = 2^-53; J. R. Shewchuk, Adaptive Precision Floating-Point Arithmetic, 1997),
 // provided nothing underflows or overflows: every nonzero difference lies in [2^-500, 2^300], so
 // every product and sum is a normal double. Otherwise, or when |det| is within the bound: exact.
+// The static bounds below hold when nothing underflows or overflows: every nonzero difference of
+// coordinates in [2^-500, 2^300] keeps every product and sum a normal double.
+bool in_filter_range(const double* v, int n) {
+  for (int k = 0; k < n; ++k)
+    if (v[k] != 0 && !(std::fabs(v[k]) >= 0x1p-500 && std::fabs(v[k]) <= 0x1p300)) return false;
+  return true;
+}
+
 std::optional<Sign> static_orient(const HPoint& pa, const HPoint& pb, const HPoint& pc, const HPoint& pd) {
   if (!pa.is_double() || !pb.is_double() || !pc.is_double() || !pd.is_double()) return std::nullopt;
   const auto a = pa.approx(), b = pb.approx(), c = pc.approx(), d = pd.approx();
@@ -36,9 +44,7 @@ std::optional<Sign> static_orient(const HPoint& pa, const HPoint& pb, const HPoi
     v[3 + i] = b[std::size_t(i)] - d[std::size_t(i)];
     v[6 + i] = c[std::size_t(i)] - d[std::size_t(i)];
   }
-  constexpr double tiny = 0x1p-500, huge = 0x1p300;
-  for (double x : v)
-    if (x != 0 && !(std::fabs(x) >= tiny && std::fabs(x) <= huge)) return std::nullopt;
+  if (!in_filter_range(v, 9)) return std::nullopt;
   const double adx = v[0], ady = v[1], adz = v[2], bdx = v[3], bdy = v[4], bdz = v[5], cdx = v[6], cdy = v[7], cdz = v[8];
   const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy, cdxady = cdx * ady, adxcdy = adx * cdy, adxbdy = adx * bdy,
                bdxady = bdx * ady;
@@ -110,9 +116,7 @@ int projected_sign(const HPoint& hp, const HPoint& hq, const HPoint& hr, int dro
     const auto p = hp.approx(), q = hq.approx(), r = hr.approx();
     const double v[4] = {q[std::size_t(i)] - p[std::size_t(i)], r[std::size_t(j)] - p[std::size_t(j)],
                          q[std::size_t(j)] - p[std::size_t(j)], r[std::size_t(i)] - p[std::size_t(i)]};
-    bool safe = true;
-    for (double x : v) safe = safe && (x == 0 || (std::fabs(x) >= 0x1p-500 && std::fabs(x) <= 0x1p300));
-    if (safe) {
+    if (in_filter_range(v, 4)) {
       const double left = v[0] * v[1], right = v[2] * v[3], det = left - right;
       constexpr double eps = 0x1p-53;
       const double bound = (3.0 + 16.0 * eps) * eps * (std::fabs(left) + std::fabs(right));

@@ -1,15 +1,15 @@
 #include "kernel/coordinate_arith.hpp"
 
 #include <cfloat>
-#include <charconv>
 #include <cmath>
 
 #include "arith/rounding.hpp"
+#include "kernel/policy_name.hpp"
 
 namespace cmx {
 
 namespace {
-constexpr unsigned min_mpfr_bits = 2, max_mpfr_bits = 65536;
+constexpr long min_mpfr_bits = 2, max_mpfr_bits = 65536;
 constexpr const char* valid_names = "rational, double or mpfr:BITS (BITS in 2..65536)";
 }  // namespace
 
@@ -37,12 +37,8 @@ std::optional<CoordinateArith> parse_coordinate_arith(std::string_view name, std
   if (name == "rational") return CoordinateArith{K::rational, 0};
   if (name == "double") return CoordinateArith{K::float64, 53};
   if (name.substr(0, 5) == "mpfr:") {
-    const std::string_view digits = name.substr(5);
-    unsigned bits = 0;
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), bits);
-    if (ec == std::errc() && end == digits.data() + digits.size() && !digits.empty() && bits >= min_mpfr_bits &&
-        bits <= max_mpfr_bits)
-      return CoordinateArith{K::mpfr, bits};
+    if (const auto bits = parse_bounded_integer(name.substr(5), min_mpfr_bits, max_mpfr_bits))
+      return CoordinateArith{K::mpfr, unsigned(*bits)};
     if (why) *why = "bad precision in arithmetic '" + std::string(name) + "': expected " + valid_names;
     return std::nullopt;
   }

@@ -1,7 +1,8 @@
 #include "kernel/filter_policy.hpp"
 
-#include <charconv>
 #include <cstdio>
+
+#include "kernel/policy_name.hpp"
 
 namespace cmx {
 
@@ -17,12 +18,8 @@ std::optional<FilterPolicy> parse_filter_policy(std::string_view name, std::stri
   if (name == "exact") return FilterPolicy{K::exact, 0};
   if (name == "naive") return FilterPolicy{K::naive, 0};
   if (name.substr(0, 5) == "mpfr:") {
-    const std::string_view digits = name.substr(5);
-    long bits = 0;
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), bits);
-    if (ec == std::errc() && end == digits.data() + digits.size() && !digits.empty() && bits >= min_mpfr_bits &&
-        bits <= max_mpfr_bits)
-      return FilterPolicy{K::mpfr, bits};
+    if (const auto bits = parse_bounded_integer(name.substr(5), min_mpfr_bits, max_mpfr_bits))
+      return FilterPolicy{K::mpfr, *bits};
     if (why) *why = "bad precision in filter '" + std::string(name) + "': expected " + valid_names;
     return std::nullopt;
   }
