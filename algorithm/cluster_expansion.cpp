@@ -14,6 +14,7 @@
 #include "algorithm/map_error.hpp"
 #include "algorithm/placement.hpp"
 #include "algorithm/smoothing.hpp"
+#include "algorithm/subcluster.hpp"
 #include "algorithm/trace_row.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
@@ -274,6 +275,7 @@ class ClusterExpander {
       case Kind::star_shapify:
       case Kind::inflate:
         // A failure changes nothing that matters for v: it waits until its star changes.
+        if (expand_subcluster(v)) return;
         label_ = entry.kind == Kind::inflate ? "inflation" : "star-shapified";
         if (const std::size_t before = e_.num_vertices(); !refine_and_expand(v, 0)) ++failures_;
         else if (s_.collapse_after_refinement) collapse_added_since(before);
@@ -284,6 +286,12 @@ class ClusterExpander {
   void expand_to(VertexId v, const HPoint& position, int k, const Placement* placement = nullptr) {
     e_.target[v] = position;
     e_.unexpanded[v] = 0;
+    after_expansion(v, k, placement);
+  }
+
+  // Bookkeeping of v having left the cluster (position and flag already set).
+  void after_expansion(VertexId v, int k, const Placement* placement) {
+    const HPoint& position = e_.target[v];
     --cluster_;
     ++expanded_;
     ++stats_.k_manifold[k >= 1 && k <= 3 ? k : 0];
@@ -358,6 +366,35 @@ class ClusterExpander {
     --cluster_;
     ++version_[x];
     dirty_star(c);
+  }
+
+  // --- subcluster expansion (paper Sec. 4.2.5, subcluster.hpp) ------------------------------
+  // Tried before refining v, that is only when no single vertex is simply expandable (the class
+  // comes first in the key). A plan is found without changing anything; committing it sets every
+  // position first, since each was chosen with the rest of the set at its common point, then
+  // checks invariant 2 around each vertex.
+  bool expand_subcluster(VertexId v) {
+    if (s_.subcluster_size < 2) return false;
+    SubclusterCounters counters;
+    const auto began = std::chrono::steady_clock::now();
+    std::optional<std::vector<SubclusterMove>> plan =
+        plan_subcluster(e_, v, s_.subcluster_size, s_.placement, ws_, counters);
+    stats_.seconds_subcluster_search += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    stats_.subcluster_candidates += counters.candidates;
+    stats_.lps += counters.exact_lps;
+    if (!plan) return false;
+    const Relabel relabel(label_, "subcluster");
+    for (const SubclusterMove& m : *plan) {
+      e_.target[m.v] = m.placement.position;
+      e_.unexpanded[m.v] = 0;
+    }
+    for (const SubclusterMove& m : *plan) after_expansion(m.v, m.manifold_k, &m.placement);
+    // Each was placed with the rest of the set at one point: crowded. Re-centring each in its
+    // star's kernel gives the next cones room.
+    for (const SubclusterMove& m : *plan) recentre(m.v);
+    ++stats_.subcluster_expansions;
+    stats_.expansions_subcluster += plan->size();
+    return true;
   }
 
   // --- post-star-shapification collapses (paper Sec. 4.2.2) ---------------------------------
@@ -452,16 +489,21 @@ class ClusterExpander {
     for (VertexId b : cone_base(e_, v).verts) {
       if (e_.boundary[b] || relaxed_moves_[b] >= 2) continue;
       ++relaxed_moves_[b];
-      const Placement p = place(gather_expansion_cone(e_, b), nullptr);
-      if (!p.ok() || p.position == e_.target[b]) continue;
-      e_.target[b] = p.position;
-      moved = true;
-      ++stats_.relaxations;
-      max_bits_ = std::max(max_bits_, p.position.bit_size());
-      dirty_star(b);
-      require_valid(b, "re-centring", &p);
+      moved = recentre(b) || moved;
     }
     return moved;
+  }
+
+  // Moves expanded vertex b to the Chebyshev centre of its star's kernel; true if it moved.
+  bool recentre(VertexId b) {
+    const Placement p = place(gather_expansion_cone(e_, b), nullptr);
+    if (!p.ok() || p.position == e_.target[b]) return false;
+    e_.target[b] = p.position;
+    ++stats_.relaxations;
+    max_bits_ = std::max(max_bits_, p.position.bit_size());
+    dirty_star(b);
+    require_valid(b, "re-centring", &p);
+    return true;
   }
 
   // --- star-shapification by pushes ------------------------------------------------------------

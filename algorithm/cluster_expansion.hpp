@@ -50,6 +50,7 @@ struct ExpansionSettings {
   std::size_t vertex_budget = 0;  // refinement stops (stuck) beyond this many vertices in total
   std::size_t smooth_every = 0;   // smoothing period in expansions (0: off)
   bool collapse_after_refinement = true;  // paper Sec. 4.2.2 (MapOptions::collapse_refinement)
+  std::size_t subcluster_size = 4;        // largest subcluster tried (< 2: off; MapOptions::subclusters)
 };
 
 struct ExpansionOutcome {

@@ -29,14 +29,18 @@ FloatCone float_expansion_cone(const Embedding& e, VertexId v) {
     const int others = e.unexpanded_count(tet) - (e.unexpanded[v] ? 1 : 0);
     if (others >= 2) continue;
     const topology::Triangle f = topology::tet_face(tet, topology::local_index(tet, v));
-    const auto p = e.target[f[0]].approx(), q = e.target[f[1]].approx(), r = e.target[f[2]].approx();
-    // Inner side of (p, q, r): orient3d(p, q, r, x) < 0, i.e. n . x < n . p with n = (q-p) x (r-p).
-    const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
-    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
-    cone.rows.push_back({n[0], n[1], n[2], n[0] * p[0] + n[1] * p[1] + n[2] * p[2]});
+    cone.rows.push_back(float_inner_row(e.target[f[0]], e.target[f[1]], e.target[f[2]]));
     if (others == 0) ++cone.base_tets;
   }
   return cone;
+}
+
+std::array<double, 4> float_inner_row(const HPoint& a, const HPoint& b, const HPoint& c) {
+  const auto p = a.approx(), q = b.approx(), r = c.approx();
+  // Inner side of (p, q, r): orient3d(p, q, r, x) < 0, i.e. n . x < n . p with n = (q-p) x (r-p).
+  const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+  const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  return {n[0], n[1], n[2], n[0] * p[0] + n[1] * p[1] + n[2] * p[2]};
 }
 
 std::vector<lp::HalfSpace> lp_halfspaces(const ExpansionCone& cone) {

@@ -42,6 +42,8 @@ struct FloatCone {
   std::size_t base_tets = 0;
 };
 FloatCone float_expansion_cone(const Embedding& e, VertexId v);
+// One such row: the inner side of the plane through a, b, c from their nearest doubles.
+std::array<double, 4> float_inner_row(const HPoint& a, const HPoint& b, const HPoint& c);
 
 // The cone's constraints as LP half-spaces a x + b y + c z <= d.
 std::vector<lp::HalfSpace> lp_halfspaces(const ExpansionCone& cone);

@@ -137,6 +137,7 @@ ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_poin
   settings.trace = options.trace;
   settings.smooth_every = options.smooth_every;
   settings.collapse_after_refinement = options.collapse_refinement;
+  settings.subcluster_size = options.subclusters;
   settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior
   settings.input_vertices = input_vertices;
   settings.vertex_budget = std::max<std::size_t>(200000, 50 * input_vertices);

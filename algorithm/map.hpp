@@ -67,6 +67,7 @@ struct MapOptions {
   SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/double_output.hpp)
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
   bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)
+  std::size_t subclusters = 4;                // largest subcluster expanded at once, 2..4 (Sec. 4.2.5); 0 or 1: off
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
   // Called after every expansion when set (costs a pass over vertices and tets per row).
   std::function<void(const TraceRow&)> trace;
@@ -87,6 +88,9 @@ struct MapStatistics {
   // Expansion.
   std::size_t expansions_simple = 0, expansions_star_shapified = 0, expansions_inflated = 0,
               expansions_automatic = 0;
+  std::size_t expansions_subcluster = 0;      // vertices expanded as part of a subcluster
+  std::size_t subcluster_expansions = 0;      // subclusters expanded (Sec. 4.2.5)
+  std::size_t subcluster_candidates = 0;      // subclusters considered (float screen included)
   std::size_t k_manifold[4] = {0, 0, 0, 0};   // expansions of k-manifold-expandable vertices (k=1..3; [0]: other)
   std::size_t pushes = 0;                     // vertices pushed into the cluster (star-shapification)
   std::size_t bends = 0;                      // spoke splits of star-shapification (new expanded vertices)
@@ -108,6 +112,7 @@ struct MapStatistics {
   // Times (seconds).
   double seconds_validate = 0, seconds_preprocess = 0, seconds_expand = 0, seconds_collapse = 0, seconds_verify = 0,
          seconds_double = 0, seconds_total = 0;
+  double seconds_subcluster_search = 0;       // part of seconds_expand spent looking for subclusters
   FilterStats filter;
 };
 

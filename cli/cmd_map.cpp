@@ -36,7 +36,8 @@ constexpr const char* usage =
     "               [--no-collapse] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
     "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
-    "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--quiet]\n"
+    "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--subclusters N]\n"
+    "               [--quiet]\n"
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
     "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
     "the verdict.\n"
@@ -56,6 +57,9 @@ constexpr const char* usage =
     "  --no-collapse-refinement  do not collapse, right after each star-shapification, the\n"
     "                    vertices it added (by default they are collapsed wherever every invariant\n"
     "                    survives: paper Sec. 4.2.2)\n"
+    "  --subclusters N   when no single vertex is simply expandable, try expanding N = 2..4\n"
+    "                    cluster vertices together before refining (paper Sec. 4.2.5; default 4;\n"
+    "                    0 or 1: off)\n"
     "  --order ORDER     expansion order (default priority: paper Sec. 4.1.2)\n"
     "  --seed N          seed of random orders and of generated shapes (default 1234)\n"
     "  --precision P     precision reduction of new positions (default dyadic)\n"
@@ -133,6 +137,10 @@ std::string parse_args(const std::vector<std::string>& args, Args& a) {
       const unsigned long long n = std::strtoull(v.c_str(), &end, 10);
       if (end == v.c_str() || *end || v[0] == '-' || n > 1000000) return "--smooth needs an integer from 0 to 1000000";
       a.options.smooth_every = std::size_t(n);
+    } else if (x == "--subclusters") {
+      if (!value(v)) return "--subclusters needs a size";
+      if (v.size() != 1 || v[0] < '0' || v[0] > '4') return "--subclusters needs an integer from 0 to 4";
+      a.options.subclusters = std::size_t(v[0] - '0');
     } else if (x == "--trace") {
       if (!value(a.trace)) return "--trace needs a path";
     } else if (x == "--format") {
@@ -328,6 +336,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   opt.str("snap", std::string(algorithm::to_string(snap_used(a))));
   opt.num("smooth", std::uint64_t(a.options.smooth_every));
   opt.flag("collapse_refinement", a.options.collapse_refinement);
+  opt.num("subclusters", std::uint64_t(a.options.subclusters < 2 ? 0 : a.options.subclusters));
   opt.num("time_limit", a.time_limit);
   j.obj("options", opt);
   if (!r) return j;
@@ -347,6 +356,8 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
                               to_string(r->center.coordinate(2)));
   ex.num("simple", std::uint64_t(s.expansions_simple)).num("star_shapified", std::uint64_t(s.expansions_star_shapified));
   ex.num("inflated", std::uint64_t(s.expansions_inflated)).num("automatic", std::uint64_t(s.expansions_automatic));
+  ex.num("subcluster", std::uint64_t(s.expansions_subcluster)).num("subclusters_expanded", std::uint64_t(s.subcluster_expansions));
+  ex.num("subcluster_candidates", std::uint64_t(s.subcluster_candidates));
   JsonObject km;
   km.num("1", std::uint64_t(s.k_manifold[1])).num("2", std::uint64_t(s.k_manifold[2])).num("3", std::uint64_t(s.k_manifold[3]));
   km.num("other", std::uint64_t(s.k_manifold[0]));
@@ -362,6 +373,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   out.num("growth_ratio", s.growth_ratio);
   bits.num("max", std::uint64_t(s.max_bits)).num("mean", s.mean_bits);
   times.num("validate", s.seconds_validate).num("preprocess", s.seconds_preprocess).num("expand", s.seconds_expand);
+  times.num("subcluster_search", s.seconds_subcluster_search);
   times.num("collapse", s.seconds_collapse).num("double", s.seconds_double);
   times.num("verify", s.seconds_verify).num("total", s.seconds_total);
   rusage usage{};
@@ -483,8 +495,10 @@ int run(const std::vector<std::string>& argv) {
     std::printf("  %zu vertices / %zu tets in, %zu / %zu out (growth %.4f), %zu splits in preprocessing\n",
                 s.input_vertices, s.input_tets, s.output_vertices, s.output_tets, s.growth_ratio,
                 s.split_topology + s.split_all_boundary_tet + s.split_no_shrink_point + s.split_fallback);
-    std::printf("  expansions: %zu simple, %zu star-shapified (%zu pushes), %zu inflated, %zu automatic\n",
-                s.expansions_simple, s.expansions_star_shapified, s.pushes, s.expansions_inflated, s.expansions_automatic);
+    std::printf("  expansions: %zu simple, %zu in %zu subclusters, %zu star-shapified (%zu pushes), %zu inflated, "
+                "%zu automatic\n",
+                s.expansions_simple, s.expansions_subcluster, s.subcluster_expansions, s.expansions_star_shapified,
+                s.pushes, s.expansions_inflated, s.expansions_automatic);
     if (dm.checked)
       std::printf("  largest coordinate: %zu bits; doubles (--snap %s) %s (%zu inverted, %zu degenerate)\n", s.max_bits,
                   std::string(algorithm::to_string(snap_used(a))).c_str(), dm.check.valid() ? "valid" : "NOT valid",

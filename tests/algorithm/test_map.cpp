@@ -129,6 +129,26 @@ TEST_CASE("collapsing what each star-shapification added keeps every invariant, 
   CHECK(off.stats.refinement_collapses == 0);
 }
 
+TEST_CASE("subclusters are expanded where no single vertex is simply expandable, keeping every invariant") {
+  // One-layer slabs (no interior vertex): the cases found to need them, in two orders.
+  MapOptions index;
+  index.order = *topology::parse_expansion_order("index");
+  const std::pair<MapProblem, MapOptions> cases[] = {{problem_from(thin_slab(8, 7, 1, 1), "stiff-tet"), index},
+                                                     {problem_from(thin_slab(10, 9, 1, 1), "star:3"), MapOptions{}}};
+  for (const auto& [p, o] : cases) {
+    const MapResult r = map_checked(p, o);  // every invariant after every step, then verified
+    CHECK(r.stats.subcluster_expansions > 0);
+    CHECK(r.stats.expansions_subcluster >= 2 * r.stats.subcluster_expansions);
+    CHECK(r.stats.expansions_subcluster <= 4 * r.stats.subcluster_expansions);
+    CHECK(r.stats.subcluster_candidates >= r.stats.subcluster_expansions);
+    MapOptions off = o;
+    off.subclusters = 1;
+    const MapResult without = map_checked(p, off);
+    CHECK(without.stats.subcluster_expansions == 0);
+    CHECK(without.stats.subcluster_candidates == 0);
+  }
+}
+
 TEST_CASE("without the final collapses every added vertex is kept, and the map is still valid") {
   const MapProblem p = problem_from(thin_slab(4, 4, 1, 1), "tet");
   MapOptions o;

@@ -110,6 +110,28 @@ TEST_CASE("cmx map --snap: every policy runs, and the written doubles are what t
   CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--smooth", "ten"}).exit_code == 2);
 }
 
+TEST_CASE("cmx map --subclusters: sizes 0 to 4 run and are reported, anything else exits 2") {
+  const Case c = make_case("ball:2", "star:4");
+  for (const char* size : {"0", "2", "4"}) {
+    CAPTURE(size);
+    const std::string out = c.dir + "/sub_" + size;
+    const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", out, "--subclusters", size, "--report",
+                            out + ".json", "--quiet"});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string report = slurp(out + ".json");
+    CHECK(report.find(std::string("\"subclusters\": ") + size) != std::string::npos);
+    CHECK(report.find("\"subcluster_candidates\": ") != std::string::npos);
+    CHECK(report.find("\"subcluster_search\": ") != std::string::npos);
+  }
+  for (const char* bad : {"5", "-1", "two", "22"}) {
+    CAPTURE(bad);
+    const auto r = run_cmx({"map", c.mesh, "--shape", "tet", "--subclusters", bad});
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--subclusters") != std::string::npos);
+  }
+}
+
 TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
   const Case c = make_case("grid:3,3,3", "stiff-tet");
   const std::string trace = c.dir + "/t.csv", svg = c.dir + "/t.svg";

@@ -1,0 +1,124 @@
+// Subcluster expansion (paper Sec. 4.2.5) on shrunk states built by the method's own validation
+// and preprocessing: its cones agree with the ordinary expansion cone where they must, a search
+// leaves the state as it found it, and a committed plan keeps every invariant.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+
+#include "algorithm/invariants.hpp"
+#include "algorithm/preprocess.hpp"
+#include "algorithm/subcluster.hpp"
+#include "algorithm/validate_problem.hpp"
+#include "map_test_util.hpp"
+
+using namespace cmx;
+using namespace cmx::algorithm;
+
+namespace {
+
+struct Shrunk {
+  Embedding e;
+  std::vector<HPoint> prescribed;
+};
+
+Shrunk shrunk(const MapProblem& problem) {
+  const MapOptions options;
+  const ValidatedProblem v = validate_problem(problem, options.filter, options.placement.lp);
+  Shrunk s;
+  s.e.mesh = v.mesh;
+  s.e.source = v.source;
+  s.e.boundary = v.boundary;
+  s.e.target.resize(v.source.size());
+  s.e.unexpanded.assign(v.source.size(), 0);
+  for (std::size_t i = 0; i < v.source.size(); ++i) {
+    if (v.boundary[i])
+      s.e.target[i] = v.prescribed[i];
+    else
+      s.e.unexpanded[i] = 1;
+  }
+  preprocess_and_shrink(s.e, v, options.placement);
+  s.prescribed = v.prescribed;
+  s.prescribed.resize(s.e.num_vertices());
+  REQUIRE(check_invariants(s.e, s.prescribed).empty());
+  return s;
+}
+
+bool same_halfspace(const InnerHalfSpace& a, const InnerHalfSpace& b) {
+  return a.u == b.u && a.w == b.w;
+}
+
+// Every half-space of a is one of b's.
+bool contained(const std::vector<InnerHalfSpace>& a, const std::vector<InnerHalfSpace>& b) {
+  return std::all_of(a.begin(), a.end(), [&](const InnerHalfSpace& h) {
+    return std::any_of(b.begin(), b.end(), [&](const InnerHalfSpace& g) { return same_halfspace(h, g); });
+  });
+}
+
+}  // namespace
+
+TEST_CASE("the coincidence cone of one cluster vertex is its expansion cone") {
+  Shrunk s = shrunk(test::problem_from(perturbed_grid(4, 4, 3, 7), "star:2"));
+  std::size_t checked = 0;
+  for (VertexId v = 0; v < s.e.num_vertices(); ++v) {
+    if (!s.e.unexpanded[v]) continue;
+    const ExpansionCone a = coincidence_cone(s.e, {v}), b = gather_expansion_cone(s.e, v);
+    CAPTURE(v);
+    CHECK(a.halfspaces.size() == b.halfspaces.size());
+    CHECK(contained(a.halfspaces, b.halfspaces));
+    CHECK(contained(b.halfspaces, a.halfspaces));
+    ++checked;
+  }
+  CHECK(checked >= 18);  // the 3 x 3 x 2 interior grid vertices, and any preprocessing splits
+}
+
+TEST_CASE("a subcluster search leaves the state unchanged, and its plan keeps every invariant") {
+  Shrunk s = shrunk(test::problem_from(perturbed_grid(4, 4, 3, 7), "sphere"));
+  const std::vector<HPoint> target = s.e.target;
+  const std::vector<char> flags = s.e.unexpanded;
+  topology::ClusterLinkWorkspace ws;
+  SubclusterCounters counters;
+  std::size_t plans = 0;
+  for (VertexId v = 0; v < s.e.num_vertices() && plans == 0; ++v) {
+    if (!s.e.unexpanded[v]) continue;
+    for (std::size_t size = 2; size <= 4 && plans == 0; ++size) {
+      const auto plan = plan_subcluster(s.e, v, size, PlacementOptions{}, ws, counters);
+      CHECK(s.e.target == target);
+      CHECK(s.e.unexpanded == flags);
+      if (!plan) continue;
+      ++plans;
+      REQUIRE(plan->size() >= 2);
+      REQUIRE(plan->size() <= size);
+      CHECK(plan->front().v != plan->back().v);
+      for (const SubclusterMove& m : *plan) {
+        CHECK(s.e.unexpanded[m.v] == 1);
+        CHECK(m.placement.ok());
+        s.e.target[m.v] = m.placement.position;
+        s.e.unexpanded[m.v] = 0;
+      }
+      // Every tet is positive or has two cluster vertices, the cluster is simply connected,
+      // boundary and source untouched: the state the loop goes on from.
+      CHECK(check_invariants(s.e, s.prescribed) == "");
+    }
+  }
+  CHECK(plans == 1);
+  CHECK(counters.candidates > 0);
+}
+
+TEST_CASE("the subclusters tried around a vertex: v and its cluster neighbours, smallest first, at most 14") {
+  Shrunk s = shrunk(test::problem_from(perturbed_grid(5, 4, 4, 3), "tet"));
+  for (VertexId v = 0; v < s.e.num_vertices(); ++v) {
+    if (!s.e.unexpanded[v]) continue;
+    const auto sets = subcluster_candidates(s.e, v, 4);
+    CHECK(sets.size() <= 14);
+    std::size_t last = 2;
+    for (const auto& set : sets) {
+      CHECK(set.front() == v);
+      CHECK(set.size() >= last);
+      last = set.size();
+      for (VertexId w : set) CHECK(s.e.unexpanded[w] == 1);
+      CHECK(std::count(set.begin(), set.end(), v) == 1);
+    }
+    CHECK(subcluster_candidates(s.e, v, 1).empty());
+    for (const auto& set : subcluster_candidates(s.e, v, 2)) CHECK(set.size() == 2);
+  }
+}
