@@ -202,6 +202,15 @@ std::vector<std::array<double, 3>> nearest_doubles(const Embedding& e) {
 
 DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& options, const Deadline& deadline) {
   DoubleMap out;
+  if (policy == SnapPolicy::repair) {
+    // The pass exists to make the doubles valid: when the plain rounding already is, it is the
+    // answer (measured: the pass was 28 % of a thick case's run, whose doubles were valid anyway).
+    out.target = nearest_doubles(e);
+    out.checked = true;
+    out.check = scan(e, out.target).check;
+    if (out.check.valid()) return out;
+    out = {};
+  }
   if (policy == SnapPolicy::chebyshev_pass || policy == SnapPolicy::repair) {
     const ChebyshevPassResult pass = chebyshev_pass(e, options, deadline);
     out.chebyshev_moves = pass.moved;

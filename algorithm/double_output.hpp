@@ -10,7 +10,8 @@
 //                     order, to the precision-reduced Chebyshev centre of its star's kernel (in
 //                     the exact map: each move keeps every tet around it positive, so the exact
 //                     map stays valid), then nearest;
-//   repair          : chebyshev-pass, then rounds of exact Gauss-Seidel moves of the interior
+//   repair          : the nearest doubles when they are valid already; else chebyshev-pass, then
+//                     rounds of exact Gauss-Seidel moves of the interior
 //                     vertices of the tets the doubles invert or flatten and of their neighbours
 //                     (vertices crowded closer than doubles resolve move apart), then rounds in
 //                     which each such vertex is re-centred among its neighbours' *double*

@@ -82,6 +82,20 @@ TEST_CASE("every snap policy: the exact map verifies and the doubles verdict hol
     }
 }
 
+TEST_CASE("repair keeps the plain rounding when it is valid, and otherwise moves vertices") {
+  // A grid onto the sphere: its nearest doubles are valid, so repair makes no move at all.
+  MapOptions nearest_only;
+  nearest_only.snap = SnapPolicy::nearest;
+  const MapProblem easy = problem_from(perturbed_grid(4, 3, 3, 7), "sphere");
+  const MapResult plain = map_checked(easy, nearest_only);
+  REQUIRE(plain.doubles.check.valid());
+  const MapResult repaired = map_checked(easy);  // the default, repair
+  CHECK(repaired.stats.chebyshev_moves == 0);
+  CHECK(repaired.target == plain.target);
+  CHECK(repaired.doubles.target == plain.doubles.target);
+  CHECK(repaired.doubles.check.valid());
+}
+
 TEST_CASE("every combination of precision policy and snap policy gives a verified map") {
   const MapProblem p = problem_from(perturbed_grid(3, 3, 2, 3), "sphere");
   for (const char* precision : {"none", "dyadic", "shift", "segment"})
