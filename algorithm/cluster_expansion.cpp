@@ -494,10 +494,11 @@ class ClusterExpander {
     return moved;
   }
 
-  // Moves expanded vertex b to the Chebyshev centre of its star's kernel; true if it moved.
+  // Moves expanded vertex b to the Chebyshev centre of its star's kernel; true if it moved. The
+  // move is optional: a non-exact run skips it when rounding would leave the kernel.
   bool recentre(VertexId b) {
     const Placement p = place(gather_expansion_cone(e_, b), nullptr);
-    if (!p.ok() || p.position == e_.target[b]) return false;
+    if (!p.ok() || p.rounded_outside || p.position == e_.target[b]) return false;
     e_.target[b] = p.position;
     ++stats_.relaxations;
     max_bits_ = std::max(max_bits_, p.position.bit_size());
