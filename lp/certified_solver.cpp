@@ -3,8 +3,14 @@
 #include "lp/certify_basis.hpp"
 #include "lp/exact_simplex.hpp"
 #include "lp/float_simplex.hpp"
+#include "lp/row_generation.hpp"
 
 namespace cmx::lp {
+
+namespace {
+// Below this many rows the exact simplex on every row is as quick as a few subproblems.
+constexpr std::size_t kRowGenerationFrom = 24;
+}  // namespace
 
 Solution certified_solve(const Problem& p) {
   p.validate();
@@ -22,6 +28,14 @@ Solution certified_solve(const Problem& p) {
       s.info.certified = true;
       s.info.float_pivots = fr.pivots;
       return s;
+    }
+    if (p.num_rows() >= kRowGenerationFrom) {
+      if (std::optional<Solution> s = solve_by_row_generation(p, form, fr)) {
+        s->info.backend = "certified";
+        s->info.fell_back = true;
+        s->info.float_pivots = fr.pivots;
+        return std::move(*s);
+      }
     }
   }
   // Infeasible and unbounded float verdicts are not certified here (they are rare for the

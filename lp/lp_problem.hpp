@@ -64,6 +64,7 @@ struct SolveInfo {
   bool fell_back = false;       // certification failed and the exact simplex ran
   int float_pivots = 0;
   int exact_pivots = 0;
+  int row_rounds = 0;           // subproblems of row generation (row_generation.hpp); 0: not used
 };
 
 struct Solution {

@@ -16,12 +16,13 @@ using namespace cmx::lp::test;
 namespace {
 
 struct Tally {
-  int compared = 0, glpk_skipped = 0, certified_direct = 0, fell_back = 0;
+  int compared = 0, glpk_skipped = 0, certified_direct = 0, fell_back = 0, row_generation = 0;
   std::map<ChebyshevStatus, int> statuses;
 };
 
 // Solves h with every backend at `weight_bits`, checks agreement and exactness.
-void check_all(const std::vector<HalfSpace>& h, unsigned weight_bits, Tally& tally, Norm norm = Norm::l2_upper) {
+void check_all(const std::vector<HalfSpace>& h, unsigned weight_bits, Tally& tally,
+               Norm norm = Norm::l2_upper) {
   ChebyshevOptions o;
   o.weight_bits = weight_bits;
   o.norm = norm;
@@ -39,6 +40,7 @@ void check_all(const std::vector<HalfSpace>& h, unsigned weight_bits, Tally& tal
     }
     CAPTURE(backend);
     if (backend == "certified") (r.lp.info.certified ? tally.certified_direct : tally.fell_back)++;
+    if (backend == "certified" && r.lp.info.row_rounds > 0) ++tally.row_generation;
     if (r.status == ChebyshevStatus::interior) REQUIRE(strictly_inside(h, r.center));
     if (r.status == ChebyshevStatus::empty_interior) REQUIRE(inside(h, r.center));
     if (r.lp.status == Status::optimal) {
@@ -76,7 +78,8 @@ std::vector<HalfSpace> infeasible_kernel(std::mt19937_64& rng, std::size_t m, un
 // The unit cube plus rows tangent to its inscribed ball with normals of rational length: the LP
 // optimum is highly degenerate (many tight rows), and planes through the corner (1,1,1).
 std::vector<HalfSpace> degenerate_cube(std::mt19937_64& rng) {
-  std::vector<HalfSpace> h = {{1, 0, 0, 1}, {-1, 0, 0, 0}, {0, 1, 0, 1}, {0, -1, 0, 0}, {0, 0, 1, 1}, {0, 0, -1, 0}};
+  std::vector<HalfSpace> h = {{1, 0, 0, 1},  {-1, 0, 0, 0}, {0, 1, 0, 1},
+                              {0, -1, 0, 0}, {0, 0, 1, 1},  {0, 0, -1, 0}};
   const int pyth[][4] = {{3, 4, 0, 5}, {2, 3, 6, 7}, {1, 2, 2, 3}, {4, 4, 7, 9}, {6, 2, 3, 7}, {0, 3, 4, 5}};
   for (int k = 0; k < 12; ++k) {
     const auto& q = pyth[rng() % 6];
@@ -105,8 +108,8 @@ TEST_CASE("differential: random feasible kernels, 10 to 1000 bits, integer and r
         check_all(h, 53, t);
         check_all(h, 24, t);
       }
-  MESSAGE("compared " << t.compared << ", glpk skipped (>= 2^53) " << t.glpk_skipped << ", certified directly "
-                      << t.certified_direct << ", fell back " << t.fell_back);
+  MESSAGE("compared " << t.compared << ", glpk skipped (>= 2^53) " << t.glpk_skipped
+                      << ", certified directly " << t.certified_direct << ", fell back " << t.fell_back);
   CHECK(t.statuses[ChebyshevStatus::interior] > 0);
 }
 
@@ -122,7 +125,9 @@ TEST_CASE("differential: infeasible and unbounded problems") {
   CHECK(t.statuses[ChebyshevStatus::unbounded] == 9);
 }
 
-TEST_CASE("differential: degenerate problems (tangent rows, planes through a vertex, duplicates, zero rows, near-parallel)") {
+TEST_CASE(
+    "differential: degenerate problems (tangent rows, planes through a vertex, duplicates, zero rows, "
+    "near-parallel)") {
   std::mt19937_64 rng(5);
   Tally t;
   for (int rep = 0; rep < 20; ++rep) {
@@ -155,7 +160,8 @@ TEST_CASE("differential: degenerate problems (tangent rows, planes through a ver
   // The empty-interior kernel of many planes through one point (a cone apex cut by a plane).
   for (int rep = 0; rep < 10; ++rep) {
     std::vector<HalfSpace> h;
-    const std::array<Rational, 3> apex = {random_rational(rng, 30), random_rational(rng, 30), random_rational(rng, 30)};
+    const std::array<Rational, 3> apex = {random_rational(rng, 30), random_rational(rng, 30),
+                                          random_rational(rng, 30)};
     for (int k = 0; k < 10; ++k) {
       HalfSpace s{random_int(rng, 10), random_int(rng, 10), -(abs(random_int(rng, 10)) + 1), 0};  // c < 0
       s.d = dot(s, apex);
@@ -169,6 +175,45 @@ TEST_CASE("differential: degenerate problems (tangent rows, planes through a ver
   CHECK(t.statuses[ChebyshevStatus::empty_interior] >= 20);
   MESSAGE("compared " << t.compared << ", glpk skipped " << t.glpk_skipped << ", certified directly "
                       << t.certified_direct << ", fell back " << t.fell_back);
+}
+
+// A tetrahedron whose every face is given by many rows that are nearly, not exactly, the same
+// plane (as a flat boundary of many triangles rounded to doubles gives): normals 2^30 (+-1, +-1,
+// +-1) plus integers below 2^`jitter`, offsets 2^30 plus the same. The certified backend then
+// meets float bases that fail their certificate and solves by row generation.
+std::vector<HalfSpace> jittered_tetrahedron(std::mt19937_64& rng, std::size_t per_face, unsigned jitter) {
+  const int normals[4][3] = {{1, 1, 1}, {-1, -1, 1}, {-1, 1, -1}, {1, -1, -1}};
+  const Integer big = Integer(1) << 30;
+  std::vector<HalfSpace> h;
+  for (const auto& n : normals)
+    for (std::size_t k = 0; k < per_face; ++k)
+      h.push_back({Rational(big * n[0] + random_int(rng, jitter)),
+                   Rational(big * n[1] + random_int(rng, jitter)),
+                   Rational(big * n[2] + random_int(rng, jitter)), Rational(big + random_int(rng, jitter))});
+  std::shuffle(h.begin(), h.end(), rng);
+  return h;
+}
+
+TEST_CASE(
+    "differential: tall problems of nearly parallel rows (row generation agrees with the exact simplex)") {
+  std::mt19937_64 rng(17);
+  Tally t;
+  for (int rep = 0; rep < 12; ++rep) {
+    const auto h = jittered_tetrahedron(rng, rep % 2 ? 60 : 250, rep % 3 == 0 ? 4 : 12);
+    check_all(h, 53, t);
+    check_all(h, 24, t, Norm::l1);
+  }
+  // Infeasible: the same faces pushed past each other (every offset negative).
+  for (int rep = 0; rep < 3; ++rep) {
+    auto h = jittered_tetrahedron(rng, 80, 8);
+    for (auto& s : h) s.d = -s.d;
+    check_all(h, 53, t);
+  }
+  CHECK(t.statuses[ChebyshevStatus::interior] == 24);
+  CHECK(t.statuses[ChebyshevStatus::infeasible] == 3);
+  CHECK(t.row_generation > 0);
+  MESSAGE("compared " << t.compared << ", certified directly " << t.certified_direct << ", fell back "
+                      << t.fell_back << ", by row generation " << t.row_generation);
 }
 
 TEST_CASE("differential: general small LPs with bounds (n = 1..5)") {
@@ -185,7 +230,9 @@ TEST_CASE("differential: general small LPs with bounds (n = 1..5)") {
     }
     for (std::size_t j = 0; j < n; ++j) {
       if (rng() % 2) p.set_lower(j, Rational(random_int(rng, 3), 1 + rng() % 2));
-      if (rng() % 3 == 0) p.set_upper(j, Rational(abs(random_int(rng, 3)), 1 + rng() % 2) + (p.lower.empty() || !p.lower[j] ? Rational(0) : *p.lower[j]));
+      if (rng() % 3 == 0)
+        p.set_upper(j, Rational(abs(random_int(rng, 3)), 1 + rng() % 2) +
+                           (p.lower.empty() || !p.lower[j] ? Rational(0) : *p.lower[j]));
     }
     std::optional<Solution> ref;
     for (const auto& backend : all_backends()) {
