@@ -260,7 +260,9 @@ class ClusterExpander {
       case Kind::simple: {
         const bool guessed = !cached_[v];
         std::optional<Placement> p = std::move(cached_[v]);
-        if (!p) p = place(gather_expansion_cone(e_, v), nullptr);
+        if (!p) p = place_at_float_centre(e_, v, float_expansion_cone(e_, v), s_.placement);
+        if (p) ++stats_.placements_float_centre;
+        else p = place(gather_expansion_cone(e_, v), nullptr);
         if (!p->ok()) {
           if (!guessed) throw MapError(MapErrorKind::internal, "a simple cone lost its interior", "vertex " + std::to_string(v));
           guess_wrong_[v] = 1;
@@ -311,7 +313,11 @@ class ClusterExpander {
     row.vertex = v;
     row.bits = position.bit_size();
     row.cone_rows = placement ? placement->rows : 0;
-    row.lp = !placement ? "none" : placement->info.certified ? "certified" : placement->info.fell_back ? "exact-fallback" : "exact";
+    row.lp = !placement                                 ? "none"
+             : placement->info.backend == "float-centre" ? "float-centre"
+             : placement->info.certified                 ? "certified"
+             : placement->info.fell_back                 ? "exact-fallback"
+                                                         : "exact";
     row.cluster_left = cluster_;
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s_.start).count();
     s_.trace(row);

@@ -29,24 +29,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-Embedding initial_embedding(const ValidatedProblem& v, const MapOptions& options, FilterStats* stats) {
-  Embedding e;
-  e.mesh = v.mesh;
-  e.source = v.source;
-  e.boundary = v.boundary;
-  e.filter = options.filter;
-  e.arith = options.placement.arith;
-  e.stats = stats;
-  const std::size_t n = v.source.size();
-  e.target.resize(n);
-  e.unexpanded.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (v.boundary[i]) e.target[i] = v.prescribed[i];
-    else e.unexpanded[i] = 1;  // every vertex is in a tet (ball check), so non-boundary = interior
-  }
-  return e;
-}
-
 double boundary_extent(const std::vector<HPoint>& points) {
   if (points.empty()) return 0;
   std::array<double, 3> lo = points[0].approx(), hi = lo;
@@ -228,7 +210,7 @@ MapResult map_to_domain(const MapProblem& given, const MapOptions& options) {
       }
     }
     s.seconds_validate = seconds_since(start);
-    Embedding e = initial_embedding(v, options, &s.filter);
+    Embedding e = initial_embedding(v, options.filter, options.placement.arith, &s.filter);
     try {
       run_method(problem, v, options, start, e, r);
     } catch (const PrecisionLost&) {

@@ -47,7 +47,7 @@ struct TraceRow {
   const char* kind = "";             // simple, star-shapified, refinement, inflation, automatic
   std::uint32_t vertex = 0;
   std::size_t cone_rows = 0;         // half-spaces of the cone's LP (0: no LP, automatic)
-  const char* lp = "";               // certified, exact-fallback, exact, none
+  const char* lp = "";               // certified, exact-fallback, exact, float-centre (no LP certified), none
   std::size_t bits = 0;              // bits of the new position (largest homogeneous coordinate)
   std::size_t max_bits = 0;          // over every vertex's current target position
   double mean_bits = 0;
@@ -104,6 +104,7 @@ struct MapStatistics {
   std::size_t snap_exact_rounds = 0, snap_repaired = 0, snap_rounds = 0;
   std::size_t lps = 0, lps_certified = 0, lps_fell_back = 0;
   std::size_t lp_float_guesses = 0;           // cones classified simple by a float LP alone (placed when popped)
+  std::size_t placements_float_centre = 0;    // of those, placed at the float centre (no exact LP; placement.hpp)
   // Output.
   std::size_t output_vertices = 0, output_tets = 0;
   double growth_ratio = 0;                    // output / input vertices (preprocessing included)

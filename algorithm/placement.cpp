@@ -1,6 +1,9 @@
 #include "algorithm/placement.hpp"
 
+#include <cmath>
+
 #include "arith/rounding.hpp"
+#include "kernel/orient.hpp"
 #include "lp/few_bit_point.hpp"
 
 namespace cmx::algorithm {
@@ -15,29 +18,38 @@ std::optional<PrecisionPolicy> parse_precision_policy(std::string_view name) {
 
 std::string_view to_string(PrecisionPolicy p) {
   switch (p) {
-    case PrecisionPolicy::none: return "none";
-    case PrecisionPolicy::dyadic: return "dyadic";
-    case PrecisionPolicy::shift: return "shift";
-    case PrecisionPolicy::segment: return "segment";
+    case PrecisionPolicy::none:
+      return "none";
+    case PrecisionPolicy::dyadic:
+      return "dyadic";
+    case PrecisionPolicy::shift:
+      return "shift";
+    case PrecisionPolicy::segment:
+      return "segment";
   }
   return "?";
 }
 
 namespace {
 
-HPoint to_hpoint(const lp::Point3& p) { return HPoint(p[0], p[1], p[2]); }
+HPoint to_hpoint(const lp::Point3& p) {
+  return HPoint(p[0], p[1], p[2]);
+}
 
-lp::Point3 to_point3(const HPoint& p) { return {p.coordinate(0), p.coordinate(1), p.coordinate(2)}; }
+lp::Point3 to_point3(const HPoint& p) {
+  return {p.coordinate(0), p.coordinate(1), p.coordinate(2)};
+}
 
 // Dyadic points on the segment from `from` toward `to` (t = 1/2, 1/4, ...), first strictly inside
 // with fewer bits than `cap`; nullopt when none within 64 halvings.
-std::optional<lp::Point3> segment_point(const std::vector<lp::HalfSpace>& h, const HPoint& from, const HPoint& to,
-                                        std::size_t cap) {
+std::optional<lp::Point3> segment_point(const std::vector<lp::HalfSpace>& h, const HPoint& from,
+                                        const HPoint& to, std::size_t cap) {
   const lp::Point3 a = to_point3(from), b = to_point3(to);
   Rational t(1, 2);
   for (int step = 0; step < 64; ++step, t /= 2) {
     lp::Point3 q;
-    for (int k = 0; k < 3; ++k) q[std::size_t(k)] = a[std::size_t(k)] + t * (b[std::size_t(k)] - a[std::size_t(k)]);
+    for (int k = 0; k < 3; ++k)
+      q[std::size_t(k)] = a[std::size_t(k)] + t * (b[std::size_t(k)] - a[std::size_t(k)]);
     if (lp::point_bits(q) >= cap) return std::nullopt;
     if (lp::strictly_inside(h, q)) return q;
   }
@@ -50,7 +62,8 @@ std::optional<lp::Point3> segment_point(const std::vector<lp::HalfSpace>& h, con
 // cones see their neighbours well inside their own kernels: measured, this avoids most
 // star-shapifications that points merely "somewhere inside" cause. Falls back to the plain
 // inside test (with an l1 norm the ball is a cube, still inside).
-std::optional<lp::Point3> centred_dyadic(const std::vector<lp::HalfSpace>& h, const lp::Point3& c, const Rational& r) {
+std::optional<lp::Point3> centred_dyadic(const std::vector<lp::HalfSpace>& h, const lp::Point3& c,
+                                         const Rational& r) {
   const Rational tol = r / 4;
   auto close = [&](const lp::Point3& q) {
     for (int i = 0; i < 3; ++i)
@@ -83,14 +96,16 @@ std::optional<lp::Point3> centred_dyadic(const std::vector<lp::HalfSpace>& h, co
 }
 
 // Rounds out.position to a non-exact arith (see PlacementOptions::arith).
-void round_to_arith(const std::vector<lp::HalfSpace>& h, const lp::Point3& centre, const CoordinateArith& arith,
-                    Placement& out) {
+void round_to_arith(const std::vector<lp::HalfSpace>& h, const lp::Point3& centre,
+                    const CoordinateArith& arith, Placement& out) {
   out.unrounded_bits = out.bits;
   lp::Point3 q = to_point3(arith.round(out.position));
   if (!lp::strictly_inside(h, q)) {
     const lp::Point3 c = to_point3(arith.round(to_hpoint(centre)));
-    if (lp::strictly_inside(h, c)) q = c;
-    else out.rounded_outside = true;
+    if (lp::strictly_inside(h, c))
+      q = c;
+    else
+      out.rounded_outside = true;
   }
   out.position = to_hpoint(q);
   out.bits = lp::point_bits(q);
@@ -104,8 +119,40 @@ bool surely_open(const FloatCone& cone, const PlacementOptions& options) {
   return g.optimal && g.radius > 1e-6 * g.scale;
 }
 
-Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& options, const HPoint* segment_from,
-                        const HPoint* segment_to) {
+std::optional<Placement> place_at_float_centre(const Embedding& e, VertexId v, const FloatCone& cone,
+                                               const PlacementOptions& options) {
+  if (options.lp.backend != "certified" || !options.arith.exact()) return std::nullopt;
+  if (options.precision != PrecisionPolicy::dyadic && options.precision != PrecisionPolicy::segment)
+    return std::nullopt;
+  const lp::FloatChebyshev g = lp::float_chebyshev(cone.rows);
+  if (!g.optimal || !(g.radius > 1e-6 * g.scale)) return std::nullopt;
+  for (double x : g.centre)
+    if (!std::isfinite(x)) return std::nullopt;
+  for (const auto& row : cone.rows) {
+    const double n = std::sqrt(row[0] * row[0] + row[1] * row[1] + row[2] * row[2]);
+    const double slack = row[3] - row[0] * g.centre[0] - row[1] * g.centre[1] - row[2] * g.centre[2];
+    if (!(n > 0) || !(slack >= 0.5 * g.radius * n)) return std::nullopt;
+  }
+  const HPoint q(Rational(g.centre[0]), Rational(g.centre[1]), Rational(g.centre[2]));
+  // The cone is exactly the tets of v with at most one other cluster vertex (expansion_cone.hpp).
+  for (TetId t : e.mesh.tets_of(v)) {
+    const topology::Tet& tet = e.mesh.tet(t);
+    if (e.unexpanded_count(tet) - (e.unexpanded[v] ? 1 : 0) >= 2) continue;
+    std::array<const HPoint*, 4> p;
+    for (std::size_t i = 0; i < 4; ++i) p[i] = tet[i] == v ? &q : &e.target[tet[i]];
+    if (orient3d(*p[0], *p[1], *p[2], *p[3], e.filter, e.stats) != Sign::positive) return std::nullopt;
+  }
+  Placement out;
+  out.status = lp::ChebyshevStatus::interior;
+  out.position = q;
+  out.bits = out.centre_bits = lp::point_bits(to_point3(q));
+  out.rows = cone.rows.size();
+  out.info.backend = "float-centre";
+  return out;
+}
+
+Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& options,
+                        const HPoint* segment_from, const HPoint* segment_to) {
   Placement out;
   if (cone.degenerate) {
     out.status = lp::ChebyshevStatus::infeasible;
@@ -135,8 +182,10 @@ Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& optio
       }
       [[fallthrough]];
     case PrecisionPolicy::dyadic:
-      if (auto q = centred_dyadic(h, c.center, c.radius)) r.point = *q;
-      else r = lp::few_bits_by_dyadics(h, c.center);
+      if (auto q = centred_dyadic(h, c.center, c.radius))
+        r.point = *q;
+      else
+        r = lp::few_bits_by_dyadics(h, c.center);
       break;
   }
   out.position = to_hpoint(r.point);

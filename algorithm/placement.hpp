@@ -34,7 +34,7 @@ struct PlacementOptions {
 
 struct Placement {
   lp::ChebyshevStatus status = lp::ChebyshevStatus::infeasible;
-  HPoint position;           // valid when status == interior
+  HPoint position;                        // valid when status == interior
   std::size_t centre_bits = 0, bits = 0;  // bits of the centre and of the position (max coordinate)
   std::size_t rows = 0;                   // half-spaces of the LP (the cone's constraints)
   std::size_t unrounded_bits = 0;         // bits of the position before rounding to a non-exact arith
@@ -48,6 +48,14 @@ struct Placement {
 // expandable. A guess for ordering only (no certificate, cheap); place_in_cone decides. False
 // also means "do not know".
 bool surely_open(const FloatCone& cone, const PlacementOptions& options);
+
+// The quick placement of a cone surely_open found open, for the dyadic and segment policies
+// without witness in an exact run with the certified backend: the float Chebyshev centre of the
+// float cone, as doubles, when every float row keeps half the float radius from it (the margin
+// the dyadic policy keeps from the exact centre) and moving v there leaves every tet of its cone
+// positive (exact predicates). No exact LP runs. nullopt: use place_in_cone.
+std::optional<Placement> place_at_float_centre(const Embedding& e, VertexId v, const FloatCone& cone,
+                                               const PlacementOptions& options);
 
 // Solves the cone's Chebyshev LP and reduces precision. `segment_from`/`segment_to` (optional)
 // give the segment of the segment policy (p_c and the witness).

@@ -25,7 +25,8 @@ lp::HalfSpace to_lp(const InnerHalfSpace& h) {
 
 class Preprocessor {
  public:
-  Preprocessor(Embedding& e, const ValidatedProblem& p, const PlacementOptions& o) : e_(e), problem_(p), options_(o) {}
+  Preprocessor(Embedding& e, const ValidatedProblem& p, const PlacementOptions& o)
+      : e_(e), problem_(p), options_(o) {}
 
   PreprocessResult run() {
     // Topology and geometry alternate: a geometric split can open a loop in the cluster mesh
@@ -45,7 +46,8 @@ class Preprocessor {
       }
     }
     if (!cluster_simply_connected())
-      throw MapError(MapErrorKind::internal, "the cluster mesh is not simply connected after splitting every chord");
+      throw MapError(MapErrorKind::internal,
+                     "the cluster mesh is not simply connected after splitting every chord");
     finish();
     return result_;
   }
@@ -55,7 +57,9 @@ class Preprocessor {
   bool is_boundary_face(const Triangle& f) const {
     return topology::tets_around_face(e_.mesh, f[0], f[1], f[2]).size() == 1;
   }
-  bool is_chord_edge(VertexId a, VertexId b) const { return topology::is_chord_edge(e_.mesh, e_.boundary, a, b); }
+  bool is_chord_edge(VertexId a, VertexId b) const {
+    return topology::is_chord_edge(e_.mesh, e_.boundary, a, b);
+  }
   int interior_runs(VertexId a, VertexId b, bool& all_interior) const {
     return topology::interior_runs(e_.mesh, e_.unexpanded, a, b, all_interior);
   }
@@ -67,7 +71,9 @@ class Preprocessor {
               return c == topology::invalid_index ? split_edge(a, b) : split_face({a, b, c});
             }};
   }
-  bool cluster_simply_connected() const { return topology::interior_simply_connected(e_.mesh, e_.unexpanded); }
+  bool cluster_simply_connected() const {
+    return topology::interior_simply_connected(e_.mesh, e_.unexpanded);
+  }
   void connect_cluster() {
     auto c = chords();
     result_.split_topology += topology::connect_interior(c);
@@ -189,7 +195,8 @@ class Preprocessor {
         if (score > best_score) best_score = score, best = i;
       }
     }
-    if (best < 0) throw MapError(MapErrorKind::internal, "an all-boundary tet without interior face is not positive");
+    if (best < 0)
+      throw MapError(MapErrorKind::internal, "an all-boundary tet without interior face is not positive");
     return topology::tet_face(tet, best);
   }
 
@@ -216,8 +223,9 @@ class Preprocessor {
     result_.shrink_radius = to_double(last_.radius);
     const lp::FewBitResult few = lp::few_bits_by_dyadics(accepted_, last_.center);
     e_.center = e_.arith.round(HPoint(few.point[0], few.point[1], few.point[2]));
-    if (!e_.arith.exact() && !lp::strictly_inside(accepted_, {e_.center.coordinate(0), e_.center.coordinate(1),
-                                                              e_.center.coordinate(2)})) {
+    if (!e_.arith.exact() &&
+        !lp::strictly_inside(accepted_,
+                             {e_.center.coordinate(0), e_.center.coordinate(1), e_.center.coordinate(2)})) {
       PrecisionLoss loss;
       loss.phase = "shrink";
       loss.what = "the shrink point rounded to " + to_string(e_.arith) + " is not strictly inside the kernel";
@@ -239,7 +247,29 @@ class Preprocessor {
 
 }  // namespace
 
-PreprocessResult preprocess_and_shrink(Embedding& e, const ValidatedProblem& problem, const PlacementOptions& options) {
+Embedding initial_embedding(const ValidatedProblem& v, const FilterPolicy& filter,
+                            const CoordinateArith& arith, FilterStats* stats) {
+  Embedding e;
+  e.mesh = v.mesh;
+  e.source = v.source;
+  e.boundary = v.boundary;
+  e.filter = filter;
+  e.arith = arith;
+  e.stats = stats;
+  const std::size_t n = v.source.size();
+  e.target.resize(n);
+  e.unexpanded.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (v.boundary[i])
+      e.target[i] = v.prescribed[i];
+    else
+      e.unexpanded[i] = 1;  // every vertex is in a tet (ball check), so non-boundary = interior
+  }
+  return e;
+}
+
+PreprocessResult preprocess_and_shrink(Embedding& e, const ValidatedProblem& problem,
+                                       const PlacementOptions& options) {
   return Preprocessor(e, problem, options).run();
 }
 

@@ -38,6 +38,12 @@ struct PreprocessResult {
 // `e` holds the validated mesh with boundary vertices at their prescribed positions and every
 // interior vertex flagged unexpanded. On return: faces split as above, e.center = a few-bit point
 // strictly inside every accepted half-space, every cluster vertex at e.center.
-PreprocessResult preprocess_and_shrink(Embedding& e, const ValidatedProblem& problem, const PlacementOptions& options);
+// The state before preprocessing: boundary vertices at their prescribed positions, every other
+// vertex unexpanded (its target is set by the shrink).
+Embedding initial_embedding(const ValidatedProblem& problem, const FilterPolicy& filter,
+                            const CoordinateArith& arith, FilterStats* stats = nullptr);
+
+PreprocessResult preprocess_and_shrink(Embedding& e, const ValidatedProblem& problem,
+                                       const PlacementOptions& options);
 
 }  // namespace cmx::algorithm

@@ -97,6 +97,8 @@ FloatChebyshev float_chebyshev(const std::vector<std::array<double, 4>>& halfspa
   if (r.kind != FloatResult::Kind::optimal) return out;
   out.optimal = true;
   out.radius = r.value;  // the objective is r itself (coefficient 1)
+  const std::vector<double> x = float_basic_point(f, r.basis);
+  for (std::size_t k = 0; k < 3; ++k) out.centre[k] = x.empty() ? std::nan("") : x[k];
   return out;
 }
 

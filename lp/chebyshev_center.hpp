@@ -57,6 +57,7 @@ ChebyshevResult chebyshev_center(const std::vector<HalfSpace>& halfspaces, const
 struct FloatChebyshev {
   bool optimal = false;  // the float simplex reached an optimum
   double radius = 0, scale = 0;
+  std::array<double, 3> centre{};  // the float optimum's centre (optimal only; NaN if its basis is singular in doubles)
 };
 FloatChebyshev float_chebyshev(const std::vector<std::array<double, 4>>& halfspaces);
 

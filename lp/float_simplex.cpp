@@ -51,7 +51,8 @@ struct DoubleField {
 // q as a double (truncated); `ok` cleared when a nonzero q leaves [2^-900, 2^900].
 double approx(const Rational& q, bool& ok) {
   // Integers (the common case) skip mpq_get_d's division; both truncate toward zero.
-  const double d = mpz_cmp_ui(q.get_den_mpz_t(), 1) == 0 ? mpz_get_d(q.get_num_mpz_t()) : mpq_get_d(q.get_mpq_t());
+  const double d =
+      mpz_cmp_ui(q.get_den_mpz_t(), 1) == 0 ? mpz_get_d(q.get_num_mpz_t()) : mpq_get_d(q.get_mpq_t());
   if (sgn(q) != 0) {
     const double a = std::fabs(d);
     if (!(a >= 0x1p-900 && a <= 0x1p900)) ok = false;
@@ -120,7 +121,8 @@ FloatResult float_simplex(const FloatForm& form) {
   detail::SimplexEngine<DoubleField> e(n, R, DoubleField{});
   for (std::size_t k = 0; k < R; ++k) {
     const double* g = &form.g[k * n];
-    e.set_row(k, [g](std::size_t j) { return g[j]; }, form.h[k]);
+    e.set_row(
+        k, [g](std::size_t j) { return g[j]; }, form.h[k]);
   }
   for (std::size_t j = 0; j < n; ++j) e.set_objective(j, form.c[j]);
   e.init_phase1_row();
@@ -131,14 +133,50 @@ FloatResult float_simplex(const FloatForm& form) {
       res.kind = FloatResult::Kind::optimal;
       res.value = e.at(0, 0);
       break;
-    case detail::EngineStatus::infeasible: res.kind = FloatResult::Kind::infeasible; break;
-    case detail::EngineStatus::unbounded: res.kind = FloatResult::Kind::unbounded; break;
-    case detail::EngineStatus::failed: res.kind = FloatResult::Kind::failed; break;
+    case detail::EngineStatus::infeasible:
+      res.kind = FloatResult::Kind::infeasible;
+      break;
+    case detail::EngineStatus::unbounded:
+      res.kind = FloatResult::Kind::unbounded;
+      break;
+    case detail::EngineStatus::failed:
+      res.kind = FloatResult::Kind::failed;
+      break;
   }
   std::vector<std::size_t> rows;
   e.basis(rows, res.basis.zero_vars);
   for (std::size_t k : rows) res.basis.tight.push_back(form.ids[k]);
   return res;
+}
+
+std::vector<double> float_basic_point(const FloatForm& form, const Basis& basis) {
+  const std::size_t n = form.n;
+  std::vector<double> a(n * (n + 1), 0.0);
+  std::size_t r = 0;
+  for (std::size_t id : basis.tight) {
+    const auto it = std::find(form.ids.begin(), form.ids.end(), id);
+    if (it == form.ids.end()) return {};
+    const std::size_t k = std::size_t(it - form.ids.begin());
+    for (std::size_t j = 0; j < n; ++j) a[r * (n + 1) + j] = form.g[k * n + j];
+    a[r * (n + 1) + n] = form.h[k];
+    ++r;
+  }
+  for (std::size_t j : basis.zero_vars) a[r++ * (n + 1) + j] = 1.0;
+  for (std::size_t c = 0; c < n; ++c) {
+    std::size_t piv = c;
+    for (std::size_t i = c + 1; i < n; ++i)
+      if (std::fabs(a[i * (n + 1) + c]) > std::fabs(a[piv * (n + 1) + c])) piv = i;
+    if (a[piv * (n + 1) + c] == 0.0) return {};
+    for (std::size_t j = 0; j <= n; ++j) std::swap(a[piv * (n + 1) + j], a[c * (n + 1) + j]);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i == c) continue;
+      const double f = a[i * (n + 1) + c] / a[c * (n + 1) + c];
+      for (std::size_t j = c; j <= n; ++j) a[i * (n + 1) + j] -= f * a[c * (n + 1) + j];
+    }
+  }
+  std::vector<double> x(n);
+  for (std::size_t j = 0; j < n; ++j) x[j] = a[j * (n + 1) + n] / a[j * (n + 1) + j];
+  return x;
 }
 
 }  // namespace cmx::lp

@@ -33,4 +33,8 @@ struct FloatResult {
 };
 FloatResult float_simplex(const FloatForm& form);
 
+// The point of a basis in doubles: its square system (tight constraints of `form`, zero_vars = 0)
+// solved with partial pivoting. Empty when the doubles see it singular. A guess, like the rest.
+std::vector<double> float_basic_point(const FloatForm& form, const Basis& basis);
+
 }  // namespace cmx::lp

@@ -11,38 +11,6 @@ namespace cmx::lp {
 
 namespace {
 
-// The float point of a basis: its square system solved in doubles (partial pivoting). Empty
-// when the doubles see it singular.
-std::vector<double> float_vertex(const FloatForm& form, const Basis& basis) {
-  const std::size_t n = form.n;
-  std::vector<double> a(n * (n + 1), 0.0);
-  std::size_t r = 0;
-  for (std::size_t id : basis.tight) {
-    const auto it = std::find(form.ids.begin(), form.ids.end(), id);
-    if (it == form.ids.end()) return {};
-    const std::size_t k = std::size_t(it - form.ids.begin());
-    for (std::size_t j = 0; j < n; ++j) a[r * (n + 1) + j] = form.g[k * n + j];
-    a[r * (n + 1) + n] = form.h[k];
-    ++r;
-  }
-  for (std::size_t j : basis.zero_vars) a[r++ * (n + 1) + j] = 1.0;
-  for (std::size_t c = 0; c < n; ++c) {
-    std::size_t piv = c;
-    for (std::size_t i = c + 1; i < n; ++i)
-      if (std::fabs(a[i * (n + 1) + c]) > std::fabs(a[piv * (n + 1) + c])) piv = i;
-    if (a[piv * (n + 1) + c] == 0.0) return {};
-    for (std::size_t j = 0; j <= n; ++j) std::swap(a[piv * (n + 1) + j], a[c * (n + 1) + j]);
-    for (std::size_t i = 0; i < n; ++i) {
-      if (i == c) continue;
-      const double f = a[i * (n + 1) + c] / a[c * (n + 1) + c];
-      for (std::size_t j = c; j <= n; ++j) a[i * (n + 1) + j] -= f * a[c * (n + 1) + j];
-    }
-  }
-  std::vector<double> x(n);
-  for (std::size_t j = 0; j < n; ++j) x[j] = a[j * (n + 1) + n] / a[j * (n + 1) + j];
-  return x;
-}
-
 double float_slack(const FloatForm& form, std::size_t k, const std::vector<double>& x) {
   double s = form.h[k];
   for (std::size_t j = 0; j < form.n; ++j) s -= form.g[k * form.n + j] * x[j];
@@ -136,7 +104,7 @@ std::vector<std::size_t> violated_rows(const Problem& p, const FloatForm& form,
 
 std::optional<Solution> solve_by_row_generation(const Problem& p, const FloatForm& form,
                                                 const FloatResult& fr, const RowGenerationOptions& options) {
-  const std::vector<double> x0 = float_vertex(form, fr.basis);
+  const std::vector<double> x0 = float_basic_point(form, fr.basis);
   if (x0.empty()) return std::nullopt;
   std::vector<char> in(p.num_rows(), 0);
   for (std::size_t id : fr.basis.tight)

@@ -10,38 +10,15 @@
 #include "algorithm/subcluster.hpp"
 #include "algorithm/validate_problem.hpp"
 #include "map_test_util.hpp"
+#include "shrunk_state.hpp"
 
 using namespace cmx;
 using namespace cmx::algorithm;
 
+using cmx::test::Shrunk;
+using cmx::test::shrunk;
+
 namespace {
-
-struct Shrunk {
-  Embedding e;
-  std::vector<HPoint> prescribed;
-};
-
-Shrunk shrunk(const MapProblem& problem) {
-  const MapOptions options;
-  const ValidatedProblem v = validate_problem(problem, options.filter, options.placement.lp);
-  Shrunk s;
-  s.e.mesh = v.mesh;
-  s.e.source = v.source;
-  s.e.boundary = v.boundary;
-  s.e.target.resize(v.source.size());
-  s.e.unexpanded.assign(v.source.size(), 0);
-  for (std::size_t i = 0; i < v.source.size(); ++i) {
-    if (v.boundary[i])
-      s.e.target[i] = v.prescribed[i];
-    else
-      s.e.unexpanded[i] = 1;
-  }
-  preprocess_and_shrink(s.e, v, options.placement);
-  s.prescribed = v.prescribed;
-  s.prescribed.resize(s.e.num_vertices());
-  REQUIRE(check_invariants(s.e, s.prescribed).empty());
-  return s;
-}
 
 bool same_halfspace(const InnerHalfSpace& a, const InnerHalfSpace& b) {
   return a.u == b.u && a.w == b.w;
