@@ -211,9 +211,14 @@ class ClusterExpander {
     } else {
       if (!st.expandable) return;
       const FloatCone guess = float_expansion_cone(e_, v);
+      const FloatConeVerdict g = guess.base_tets == 0 || guess_wrong_[v] ? FloatConeVerdict{} : guess_cone(guess, s_.placement);
       if (guess.base_tets == 0) {
         kind = Kind::inflate;
-      } else if (!guess_wrong_[v] && surely_open(guess, s_.placement)) {
+      } else if (g.guess == ConeGuess::closed && certified_closed(e_, v, guess, g.lp)) {
+        // The exact class, proved on at most four rows instead of the whole cone.
+        kind = refinement_kind(v);
+        ++stats_.closed_by_support;
+      } else if (g.guess == ConeGuess::open) {
         // The exact cone, the certified LP and the precision reduction run when v is popped,
         // once, instead of at every re-evaluation (about five per expansion): the same position,
         // a fraction of the cost. Should the guess be wrong there, v is classified exactly from
@@ -229,13 +234,16 @@ class ClusterExpander {
         } else {
           // Bases that are not discs (pinched, dangling edges) come after every disc: their
           // refinement is heavier (paper Sec. 4.1.2: star-shapification before inflation).
-          kind = topology::expanded_link_cut_vertices(e_.mesh, v, e_.unexpanded).empty() ? Kind::star_shapify
-                                                                                         : Kind::inflate;
+          kind = refinement_kind(v);
         }
       }
     }
     queue_.push({key(kind, st.manifold_k, st.expanded_neighbors, v), version_[v], v, kind,
                  std::uint8_t(st.manifold_k)});
+  }
+
+  Kind refinement_kind(VertexId v) {
+    return topology::expanded_link_cut_vertices(e_.mesh, v, e_.unexpanded).empty() ? Kind::star_shapify : Kind::inflate;
   }
 
   Placement place(const ExpansionCone& cone, const VertexId* witness) {

@@ -11,15 +11,19 @@ ExpansionCone gather_expansion_cone(const Embedding& e, VertexId v) {
     const topology::Tet& tet = e.mesh.tet(t);
     const int others = e.unexpanded_count(tet) - (e.unexpanded[v] ? 1 : 0);
     if (others >= 2) continue;
-    const int i = topology::local_index(tet, v);
-    const topology::Triangle f = topology::tet_face(tet, i);
-    // Cluster vertices other than v sit at p_c: e.target holds exactly that position.
-    InnerHalfSpace h = inner_halfspace(e.target[f[0]], e.target[f[1]], e.target[f[2]]);
+    InnerHalfSpace h = cone_halfspace(e, v, t);
     if (h.is_degenerate()) cone.degenerate = true;
     (others == 0 ? cone.base_tets : cone.side_tets) += 1;
     cone.halfspaces.push_back(std::move(h));
   }
   return cone;
+}
+
+InnerHalfSpace cone_halfspace(const Embedding& e, VertexId v, TetId t) {
+  const topology::Tet& tet = e.mesh.tet(t);
+  const topology::Triangle f = topology::tet_face(tet, topology::local_index(tet, v));
+  // Cluster vertices other than v sit at p_c: e.target holds exactly that position.
+  return inner_halfspace(e.target[f[0]], e.target[f[1]], e.target[f[2]]);
 }
 
 FloatCone float_expansion_cone(const Embedding& e, VertexId v) {
@@ -30,6 +34,7 @@ FloatCone float_expansion_cone(const Embedding& e, VertexId v) {
     if (others >= 2) continue;
     const topology::Triangle f = topology::tet_face(tet, topology::local_index(tet, v));
     cone.rows.push_back(float_inner_row(e.target[f[0]], e.target[f[1]], e.target[f[2]]));
+    cone.tets.push_back(t);
     if (others == 0) ++cone.base_tets;
   }
   return cone;

@@ -39,11 +39,15 @@ ExpansionCone gather_expansion_cone(const Embedding& e, VertexId v);
 // c z <= d; a zero row for a collinear face): cheap, inexact, for classification guesses only.
 struct FloatCone {
   std::vector<std::array<double, 4>> rows;
+  std::vector<TetId> tets;  // the tet of each row
   std::size_t base_tets = 0;
 };
 FloatCone float_expansion_cone(const Embedding& e, VertexId v);
 // One such row: the inner side of the plane through a, b, c from their nearest doubles.
 std::array<double, 4> float_inner_row(const HPoint& a, const HPoint& b, const HPoint& c);
+
+// The exact constraint of one tet of v's star (as gather_expansion_cone makes it).
+InnerHalfSpace cone_halfspace(const Embedding& e, VertexId v, TetId t);
 
 // The cone's constraints as LP half-spaces a x + b y + c z <= d.
 std::vector<lp::HalfSpace> lp_halfspaces(const ExpansionCone& cone);

@@ -105,6 +105,7 @@ struct MapStatistics {
   std::size_t lps = 0, lps_certified = 0, lps_fell_back = 0;
   std::size_t lp_float_guesses = 0;           // cones classified simple by a float LP alone (placed when popped)
   std::size_t placements_float_centre = 0;    // of those, placed at the float centre (no exact LP; placement.hpp)
+  std::size_t closed_by_support = 0;          // cones proved closed on their float basis's rows (certified_closed)
   // Output.
   std::size_t output_vertices = 0, output_tets = 0;
   double growth_ratio = 0;                    // output / input vertices (preprocessing included)

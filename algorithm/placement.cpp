@@ -113,10 +113,23 @@ void round_to_arith(const std::vector<lp::HalfSpace>& h, const lp::Point3& centr
 
 }  // namespace
 
-bool surely_open(const FloatCone& cone, const PlacementOptions& options) {
-  if (options.lp.backend != "certified") return false;
-  const lp::FloatChebyshev g = lp::float_chebyshev(cone.rows);
-  return g.optimal && g.radius > 1e-6 * g.scale;
+FloatConeVerdict guess_cone(const FloatCone& cone, const PlacementOptions& options) {
+  FloatConeVerdict out;
+  if (options.lp.backend != "certified") return out;
+  out.lp = lp::float_chebyshev(cone.rows);
+  if (!out.lp.optimal) return out;
+  if (out.lp.radius > 1e-6 * out.lp.scale)
+    out.guess = ConeGuess::open;
+  else if (out.lp.radius <= 1e-11 * out.lp.scale)
+    out.guess = ConeGuess::closed;
+  return out;
+}
+
+bool certified_closed(const Embedding& e, VertexId v, const FloatCone& cone,
+                      const lp::FloatChebyshev& guess) {
+  std::vector<InnerHalfSpace> support;
+  for (std::size_t i : guess.tight_rows) support.push_back(cone_halfspace(e, v, cone.tets[i]));
+  return proves_no_common_point(support);
 }
 
 std::optional<Placement> place_at_float_centre(const Embedding& e, VertexId v, const FloatCone& cone,

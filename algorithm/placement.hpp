@@ -43,13 +43,27 @@ struct Placement {
   bool ok() const { return status == lp::ChebyshevStatus::interior; }
 };
 
-// True when the float simplex alone finds the cone's kernel clearly open (radius above 1e-6 of
-// the rows' scale) and the backend is the certified one: the cone will almost surely be simply
-// expandable. A guess for ordering only (no certificate, cheap); place_in_cone decides. False
-// also means "do not know".
-bool surely_open(const FloatCone& cone, const PlacementOptions& options);
+// What the float simplex alone says about the cone's kernel, for ordering (no certificate,
+// cheap); with the certified backend only (else `unsure`):
+//   open   : radius above 1e-6 of the rows' scale: almost surely simply expandable;
+//   closed : radius at most 1e-11 of the scale: most likely no interior (certified_closed decides);
+//   unsure : anything else, and float failures.
+enum class ConeGuess : std::uint8_t { open, closed, unsure };
+struct FloatConeVerdict {
+  ConeGuess guess = ConeGuess::unsure;
+  lp::FloatChebyshev lp;
+};
+FloatConeVerdict guess_cone(const FloatCone& cone, const PlacementOptions& options);
 
-// The quick placement of a cone surely_open found open, for the dyadic and segment policies
+// Exact proof that v's cone has no interior, from a cone guessed closed: the rows of the float
+// optimum's basis (at most four) alone already have no common point (proves_no_common_point, a
+// Motzkin certificate, kernel/plane.hpp), and the cone has more constraints. False means "not
+// proved" (the full cone must be solved).
+// Measured on a thick case: 98 % of the cones that are not simple are closed, and each is
+// re-evaluated about five times while it waits.
+bool certified_closed(const Embedding& e, VertexId v, const FloatCone& cone, const lp::FloatChebyshev& guess);
+
+// The quick placement of a cone guessed open, for the dyadic and segment policies
 // without witness in an exact run with the certified backend: the float Chebyshev centre of the
 // float cone, as doubles, when every float row keeps half the float radius from it (the margin
 // the dyadic policy keeps from the exact centre) and moving v there leaves every tet of its cone

@@ -371,6 +371,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   ex.num("lps_exact_fallback", std::uint64_t(s.lps_fell_back));
   ex.num("lp_float_guesses", std::uint64_t(s.lp_float_guesses));
   ex.num("placements_float_centre", std::uint64_t(s.placements_float_centre));
+  ex.num("closed_by_support", std::uint64_t(s.closed_by_support));
   out.num("vertices", std::uint64_t(s.output_vertices)).num("tets", std::uint64_t(s.output_tets));
   out.num("growth_ratio", s.growth_ratio);
   bits.num("max", std::uint64_t(s.max_bits)).num("mean", s.mean_bits);

@@ -10,10 +10,14 @@ namespace cmx::lp {
 
 std::string_view to_string(ChebyshevStatus s) {
   switch (s) {
-    case ChebyshevStatus::interior: return "interior";
-    case ChebyshevStatus::empty_interior: return "empty_interior";
-    case ChebyshevStatus::infeasible: return "infeasible";
-    case ChebyshevStatus::unbounded: return "unbounded";
+    case ChebyshevStatus::interior:
+      return "interior";
+    case ChebyshevStatus::empty_interior:
+      return "empty_interior";
+    case ChebyshevStatus::infeasible:
+      return "infeasible";
+    case ChebyshevStatus::unbounded:
+      return "unbounded";
   }
   return "?";
 }
@@ -45,7 +49,8 @@ Problem chebyshev_problem(const std::vector<HalfSpace>& halfspaces, const Chebys
 
 ChebyshevResult chebyshev_center(const std::vector<HalfSpace>& halfspaces, const ChebyshevOptions& options) {
   const SolveFunction solve_fn = find_backend(options.backend);
-  if (!solve_fn) throw std::invalid_argument("chebyshev_center: unknown LP backend '" + options.backend + "'");
+  if (!solve_fn)
+    throw std::invalid_argument("chebyshev_center: unknown LP backend '" + options.backend + "'");
   ChebyshevResult res;
   bool zero_infeasible = false;
   const Problem p = chebyshev_problem(halfspaces, options, nullptr, &zero_infeasible);
@@ -57,9 +62,14 @@ ChebyshevResult chebyshev_center(const std::vector<HalfSpace>& halfspaces, const
   }
   res.lp = solve_fn(p);
   switch (res.lp.status) {
-    case Status::infeasible: res.status = ChebyshevStatus::infeasible; return res;
-    case Status::unbounded: res.status = ChebyshevStatus::unbounded; return res;
-    case Status::optimal: break;
+    case Status::infeasible:
+      res.status = ChebyshevStatus::infeasible;
+      return res;
+    case Status::unbounded:
+      res.status = ChebyshevStatus::unbounded;
+      return res;
+    case Status::optimal:
+      break;
   }
   for (int k = 0; k < 3; ++k) res.center[std::size_t(k)] = res.lp.x[std::size_t(k)];
   res.radius = res.lp.x[3];
@@ -82,13 +92,16 @@ FloatChebyshev float_chebyshev(const std::vector<std::array<double, 4>>& halfspa
     return true;
   };
   FloatChebyshev out;
-  for (const auto& h : halfspaces) {
+  std::vector<std::size_t> input_row;  // form row -> input row
+  for (std::size_t i = 0; i < halfspaces.size(); ++i) {
+    const auto& h = halfspaces[i];
     const double w = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
     if (w == 0) {
       if (h[3] < 0) return out;  // 0 <= d < 0: empty
       continue;
     }
     if (!add(h[0], h[1], h[2], w, h[3])) return out;
+    input_row.push_back(i);
   }
   for (double h : f.h) out.scale = std::max(out.scale, std::fabs(h));
   add(0, 0, 0, -1, 0);
@@ -97,6 +110,8 @@ FloatChebyshev float_chebyshev(const std::vector<std::array<double, 4>>& halfspa
   if (r.kind != FloatResult::Kind::optimal) return out;
   out.optimal = true;
   out.radius = r.value;  // the objective is r itself (coefficient 1)
+  for (std::size_t id : r.basis.tight)
+    if (id < input_row.size()) out.tight_rows.push_back(input_row[id]);
   const std::vector<double> x = float_basic_point(f, r.basis);
   for (std::size_t k = 0; k < 3; ++k) out.centre[k] = x.empty() ? std::nan("") : x[k];
   return out;

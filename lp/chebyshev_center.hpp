@@ -58,6 +58,7 @@ struct FloatChebyshev {
   bool optimal = false;  // the float simplex reached an optimum
   double radius = 0, scale = 0;
   std::array<double, 3> centre{};  // the float optimum's centre (optimal only; NaN if its basis is singular in doubles)
+  std::vector<std::size_t> tight_rows;  // input rows tight in the optimal float basis (optimal only)
 };
 FloatChebyshev float_chebyshev(const std::vector<std::array<double, 4>>& halfspaces);
 

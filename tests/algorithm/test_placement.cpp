@@ -63,3 +63,28 @@ TEST_CASE("a float-centre placement declines other backends, precision policies 
   o.arith = *parse_coordinate_arith("double");
   CHECK_FALSE(place_at_float_centre(s.e, v, guess, o));
 }
+
+TEST_CASE("a cone proved closed on its float basis's rows has no interior for the certified LP either") {
+  std::size_t proved = 0, open = 0;
+  for (const char* shape : {"sphere", "star:4", "stiff-tet", "tet"}) {
+    for (std::uint64_t seed : {3, 11, 19}) {
+      test::Shrunk s = test::shrunk(test::problem_from(perturbed_grid(5, 4, 4, seed), shape));
+      for (VertexId v = 0; v < s.e.num_vertices(); ++v) {
+        if (!s.e.unexpanded[v]) continue;
+        const FloatCone guess = float_expansion_cone(s.e, v);
+        if (guess.base_tets == 0) continue;
+        const FloatConeVerdict g = guess_cone(guess, {});
+        const Placement exact = place_in_cone(gather_expansion_cone(s.e, v), {});
+        CAPTURE(shape);
+        CAPTURE(v);
+        if (exact.ok()) ++open;
+        if (g.guess != ConeGuess::closed || !certified_closed(s.e, v, guess, g.lp)) continue;
+        ++proved;
+        CHECK_FALSE(exact.ok());
+      }
+    }
+  }
+  MESSAGE("proved closed " << proved << ", open " << open);
+  CHECK(proved >= 1);
+  CHECK(open >= 1);
+}
