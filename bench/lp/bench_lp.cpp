@@ -12,14 +12,19 @@
 // same LP rows and solving it.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <deque>
 #include <map>
 #include <random>
+#include <string>
 #include <tuple>
 #include <vector>
 
 #include "lp/backend_registry.hpp"
+#include "lp/certify_basis.hpp"
 #include "lp/chebyshev_center.hpp"
+#include "lp/exact_simplex.hpp"
+#include "lp/float_simplex.hpp"
 #ifdef CMX_HAVE_GLPK
 #include "lp/glpk/glpk_backend.hpp"
 #endif
@@ -121,6 +126,67 @@ void bm_cgal(benchmark::State& state) {
 }
 #endif
 
+// Flat kernels: a tetrahedron whose every face is `per_face` rows that are nearly, not exactly,
+// one plane (normals 2^30 (+-1, +-1, +-1) plus integers below 2^12, offsets 2^30 plus the same),
+// as the boundary kernel of a flat prescribed face rounded to doubles. The float basis of these
+// fails its certificate; `certified` then solves by row generation (lp/row_generation.hpp).
+std::vector<HalfSpace> flat_tetrahedron(std::mt19937_64& rng, std::size_t per_face) {
+  const int normals[4][3] = {{1, 1, 1}, {-1, -1, 1}, {-1, 1, -1}, {1, -1, -1}};
+  const Integer big = Integer(1) << 30;
+  std::vector<HalfSpace> h;
+  for (const auto& n : normals)
+    for (std::size_t k = 0; k < per_face; ++k)
+      h.push_back({Rational(big * n[0] + random_int(rng, 12)), Rational(big * n[1] + random_int(rng, 12)),
+                   Rational(big * n[2] + random_int(rng, 12)), Rational(big + random_int(rng, 12))});
+  std::shuffle(h.begin(), h.end(), rng);
+  return h;
+}
+
+const std::vector<std::vector<HalfSpace>>& flat_pool(const benchmark::State& state) {
+  static std::map<std::size_t, std::vector<std::vector<HalfSpace>>> cache;
+  const std::size_t per_face = std::size_t(state.range(0));
+  auto& p = cache[per_face];
+  if (p.empty()) {
+    std::mt19937_64 rng(77 + per_face);
+    for (int i = 0; i < 4; ++i) p.push_back(flat_tetrahedron(rng, per_face));
+  }
+  return p;
+}
+
+// The `certified` backend as it was before row generation: float simplex, certificate, and on
+// failure the exact simplex over every row warm-started from the float basis.
+Solution certified_without_row_generation(const Problem& p) {
+  const FloatForm form = float_form(p);
+  const FloatResult fr = float_simplex(form);
+  if (fr.kind == FloatResult::Kind::optimal) {
+    Certificate cert = certify_basis(p, fr.basis, &form);
+    if (cert.verdict == Certificate::Verdict::optimal) {
+      Solution s;
+      s.status = Status::optimal;
+      s.x = std::move(cert.x);
+      return s;
+    }
+  }
+  return exact_simplex(p, fr.kind == FloatResult::Kind::failed ? nullptr : &fr.basis);
+}
+
+void bm_flat(benchmark::State& state, const char* variant) {
+  const auto& instances = flat_pool(state);
+  ChebyshevOptions o;
+  std::vector<Problem> lps;
+  for (const auto& h : instances) lps.push_back(chebyshev_problem(h, o));
+  const bool old_path = std::string(variant) == "certified-before-row-generation";
+  std::size_t i = 0;
+  int rounds = 0;
+  for (auto _ : state) {
+    const Problem& p = lps[i++ % lps.size()];
+    const Solution s = old_path ? certified_without_row_generation(p) : solve(p, variant);
+    rounds += s.info.row_rounds;
+    benchmark::DoNotOptimize(s.x);
+  }
+  state.counters["row_rounds"] = benchmark::Counter(rounds, benchmark::Counter::kAvgIterations);
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
   for (int bits : {10, 40, 200})
     for (int m : {10, 20, 50, 100, 200}) b->Args({m, bits, 1});
@@ -140,6 +206,12 @@ const bool registered = [] {
 #ifdef CMX_HAVE_CGAL
   benchmark::RegisterBenchmark("chebyshev/cgal_qp_gmpq_bland", bm_cgal)->Apply(sizes);
 #endif
+  for (const char* v : {"certified", "certified-before-row-generation", "exact"})
+    benchmark::RegisterBenchmark((std::string("chebyshev_flat/") + v).c_str(), bm_flat, v)
+        ->ArgName("per_face")
+        ->Arg(100)
+        ->Arg(1000)
+        ->Unit(benchmark::kMillisecond);
   return true;
 }();
 
