@@ -8,7 +8,9 @@
 namespace cmx {
 namespace {
 
-long bits(const Integer& z) { return long(mpz_sizeinbase(z.get_mpz_t(), 2)); }
+long bits(const Integer& z) {
+  return long(mpz_sizeinbase(z.get_mpz_t(), 2));
+}
 
 // floor(log2(a / b)) for a, b > 0.
 long floor_log2(const Integer& a, const Integer& b) {
@@ -42,9 +44,15 @@ void round_magnitude(const Rational& q, unsigned k, long min_lsb, Round dir, Int
         up = c > 0 || (c == 0 && mpz_odd_p(m.get_mpz_t()));
         break;
       }
-      case Round::toward_zero: up = false; break;
-      case Round::upward: up = !negative; break;
-      case Round::downward: up = negative; break;
+      case Round::toward_zero:
+        up = false;
+        break;
+      case Round::upward:
+        up = !negative;
+        break;
+      case Round::downward:
+        up = negative;
+        break;
     }
   }
   if (up) ++m;
@@ -94,6 +102,21 @@ Dyadic round_to_dyadic(const Rational& q, unsigned k, Round dir) {
   return d;
 }
 
-DoubleEnclosure enclose(const Rational& q) { return {to_double(q, Round::downward), to_double(q, Round::upward)}; }
+DoubleEnclosure enclose(const Rational& q) {
+  // Fast path: GMP's conversion truncates toward zero, exactly. Away from the ends of the double
+  // range the enclosure is that truncation and its neighbour away from zero, or the truncation
+  // alone when q is itself a double (a power-of-two denominator and at most 53 significant
+  // bits). Every HPoint computes three enclosures, so this is on the hot path.
+  const double t = mpq_get_d(q.get_mpq_t());
+  const double a = std::fabs(t);
+  if (!(a > 0x1p-1000 && a < 0x1p1000)) return {to_double(q, Round::downward), to_double(q, Round::upward)};
+  const Integer& num = q.get_num();
+  const Integer& den = q.get_den();
+  const bool dyadic = mpz_scan1(den.get_mpz_t(), 0) + 1 == mpz_sizeinbase(den.get_mpz_t(), 2);
+  const bool exact = dyadic && mpz_sizeinbase(num.get_mpz_t(), 2) - mpz_scan1(num.get_mpz_t(), 0) <= 53;
+  if (exact) return {t, t};
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  return t > 0 ? DoubleEnclosure{t, std::nextafter(t, inf)} : DoubleEnclosure{std::nextafter(t, -inf), t};
+}
 
 }  // namespace cmx

@@ -26,8 +26,8 @@ static Rational pow2(long e) {
 }
 
 TEST_CASE("to_double: ties to even and the directed modes") {
-  Rational tie_down = 1 + pow2(-53);      // halfway between 1 and 1 + 2^-52
-  Rational tie_up = 1 + 3 * pow2(-53);    // halfway between 1 + 2^-52 and 1 + 2^-51
+  Rational tie_down = 1 + pow2(-53);    // halfway between 1 and 1 + 2^-52
+  Rational tie_up = 1 + 3 * pow2(-53);  // halfway between 1 + 2^-52 and 1 + 2^-51
   CHECK(to_double(tie_down) == 1.0);
   CHECK(to_double(tie_up) == 1.0 + std::ldexp(1.0, -51));
   CHECK(to_double(tie_down, Round::upward) == 1.0 + std::ldexp(1.0, -52));
@@ -51,7 +51,8 @@ TEST_CASE("to_double: subnormals and overflow") {
   CHECK(to_double(-pow2(1024), Round::upward) == -DBL_MAX);
   CHECK(to_double(-pow2(1024), Round::downward) == -std::numeric_limits<double>::infinity());
   CHECK(to_double(Rational(DBL_MAX)) == DBL_MAX);
-  CHECK(to_double(Rational(DBL_MAX) + pow2(970)) == std::numeric_limits<double>::infinity());  // tie: even is 2^1024
+  CHECK(to_double(Rational(DBL_MAX) + pow2(970)) ==
+        std::numeric_limits<double>::infinity());  // tie: even is 2^1024
   CHECK(to_double(Rational(DBL_MAX) + pow2(969)) == DBL_MAX);
 }
 
@@ -63,7 +64,8 @@ TEST_CASE("to_double agrees with strtod in all four directions on random decimal
   int disagreements = 0;
   for (int n = 0; n < 20000; ++n) {
     std::ostringstream out;  // (not string operator+: g++ 12 -Wrestrict false positive)
-    out << ((rng() & 1) ? "-" : "") << rng() % 1000000000000ULL << '.' << rng() << 'e' << int(rng() % 640) - 330;
+    out << ((rng() & 1) ? "-" : "") << rng() % 1000000000000ULL << '.' << rng() << 'e'
+        << int(rng() % 640) - 330;
     std::string text = out.str();
     Rational q = *cmx::parse_rational(text);
     for (int m = 0; m < 4; ++m) {
@@ -87,6 +89,34 @@ TEST_CASE("enclosures are tight and contain the value") {
     CHECK((box.is_point() || std::nextafter(box.lo, INFINITY) == box.hi));
     CHECK(box.is_point() == cmx::is_double(q));
   }
+}
+
+TEST_CASE("enclosures equal the directed roundings, doubles and dyadics of every size included") {
+  std::mt19937_64 rng(23);
+  auto check = [](const Rational& q) {
+    const auto box = cmx::enclose(q);
+    CHECK(box.lo == cmx::to_double(q, Round::downward));
+    CHECK(box.hi == cmx::to_double(q, Round::upward));
+  };
+  for (int n = 0; n < 3000; ++n) {
+    const int shift = int(rng() % 2200) - 1100;  // across the whole double range and beyond it
+    cmx::Integer num(std::to_string(rng() >> (rng() % 64)));
+    if (rng() & 1) num = -num;
+    cmx::Integer den = 1;
+    if (n % 3 == 0) den = cmx::Integer(std::to_string(rng() | 1));  // not dyadic
+    Rational q(num, den);
+    q.canonicalize();
+    if (shift >= 0)
+      q *= Rational(cmx::Integer(1) << std::size_t(shift));
+    else
+      q /= Rational(cmx::Integer(1) << std::size_t(-shift));
+    CAPTURE(n);
+    check(q);
+    check(q + Rational(1, cmx::Integer(1) << 60));  // a 53-bit-plus value near it
+  }
+  for (double d :
+       {1.0, -1.0, 0x1p-1000, 0x1.8p-1000, 0x1p1000, -0x1.fffffffffffffp999, 0x1p-1074, 0.1, 1e300})
+    check(Rational(d));
 }
 
 TEST_CASE("round_to_dyadic keeps at most k bits and rounds the right way") {
