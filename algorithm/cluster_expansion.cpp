@@ -232,11 +232,13 @@ void ClusterExpander::handle(const Entry& entry) {
     case Kind::simple: {
       const bool guessed = !cached_[v];
       std::optional<Placement> p = std::move(cached_[v]);
-      if (!p) p = place_at_float_centre(e_, v, float_expansion_cone(e_, v), s_.placement);
-      if (p)
-        ++stats_.placements_float_centre;
-      else
-        p = place(gather_expansion_cone(e_, v), nullptr);
+      if (!p) {
+        p = place_at_float_centre(e_, v, float_expansion_cone(e_, v), s_.placement);
+        if (p)
+          ++stats_.placements_float_centre;
+        else
+          p = place(gather_expansion_cone(e_, v), nullptr);
+      }
       if (!p->ok()) {
         if (!guessed)
           throw MapError(MapErrorKind::internal, "a simple cone lost its interior",

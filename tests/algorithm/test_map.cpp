@@ -40,6 +40,24 @@ TEST_CASE("perturbed grids onto the four generated boundary shapes") {
   }
 }
 
+TEST_CASE(
+    "the float shortcuts are taken and counted: float-centre placements and closed cones proved on their "
+    "basis") {
+  const GeneratedDomain d = perturbed_grid(6, 5, 5, 3);
+  std::size_t placed = 0, proved = 0;
+  for (const char* shape : shapes) {
+    CAPTURE(shape);
+    const MapResult r = map_checked(problem_from(d, shape));
+    // A float-centre placement is one popped vertex classified simple by its float guess.
+    CHECK(r.stats.placements_float_centre <= r.stats.expansions_simple);
+    CHECK(r.stats.placements_float_centre <= r.stats.lp_float_guesses);
+    placed += r.stats.placements_float_centre;
+    proved += r.stats.closed_by_support;
+  }
+  CHECK(placed >= 100);
+  CHECK(proved >= 10);
+}
+
 TEST_CASE("voxel balls onto the four generated boundary shapes") {
   const GeneratedDomain d = voxel_ball(3, 2);
   for (const char* shape : shapes) {
@@ -133,8 +151,9 @@ TEST_CASE("subclusters are expanded where no single vertex is simply expandable,
   // One-layer slabs (no interior vertex): the cases found to need them, in two orders.
   MapOptions index;
   index.order = *topology::parse_expansion_order("index");
-  const std::pair<MapProblem, MapOptions> cases[] = {{problem_from(thin_slab(8, 7, 1, 1), "stiff-tet"), index},
-                                                     {problem_from(thin_slab(10, 9, 1, 1), "star:3"), MapOptions{}}};
+  const std::pair<MapProblem, MapOptions> cases[] = {
+      {problem_from(thin_slab(8, 7, 1, 1), "stiff-tet"), index},
+      {problem_from(thin_slab(10, 9, 1, 1), "star:3"), MapOptions{}}};
   for (const auto& [p, o] : cases) {
     const MapResult r = map_checked(p, o);  // every invariant after every step, then verified
     CHECK(r.stats.subcluster_expansions > 0);
