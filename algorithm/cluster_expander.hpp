@@ -153,6 +153,8 @@ class ClusterExpander {
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
   std::vector<std::uint32_t> version_;
   std::vector<std::optional<Placement>> cached_;
+  std::vector<std::optional<std::array<double, 3>>>
+      float_centre_;  // of a cone guessed open, from classification
   std::vector<char> is_dirty_;
   std::vector<VertexId> dirty_;
   std::unordered_map<VertexId, int> inflations_, relaxed_moves_;

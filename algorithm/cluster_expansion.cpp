@@ -73,6 +73,7 @@ ExpansionOutcome ClusterExpander::run() {
 void ClusterExpander::grow() {
   version_.resize(e_.num_vertices(), 0);
   cached_.resize(e_.num_vertices());
+  float_centre_.resize(e_.num_vertices());
   guess_wrong_.resize(e_.num_vertices(), 0);
   is_dirty_.resize(e_.num_vertices(), 0);
 }
@@ -167,6 +168,7 @@ void ClusterExpander::evaluate(VertexId v) {
   grow();
   ++version_[v];
   cached_[v].reset();
+  float_centre_[v].reset();
   if (!e_.unexpanded[v]) return;
   const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
   Kind kind;
@@ -187,9 +189,10 @@ void ClusterExpander::evaluate(VertexId v) {
       // The exact cone, the certified LP and the precision reduction run when v is popped,
       // once, instead of at every re-evaluation (about five per expansion): the same position,
       // a fraction of the cost. Should the guess be wrong there, v is classified exactly from
-      // then on.
+      // then on. The float centre is kept for the quick placement (placement.hpp).
       kind = Kind::simple;
       ++stats_.lp_float_guesses;
+      float_centre_[v] = float_centre(guess, g.lp, s_.placement);
     } else {
       const ExpansionCone cone = gather_expansion_cone(e_, v);
       Placement p = place(cone, nullptr);
@@ -233,7 +236,7 @@ void ClusterExpander::handle(const Entry& entry) {
       const bool guessed = !cached_[v];
       std::optional<Placement> p = std::move(cached_[v]);
       if (!p) {
-        p = place_at_float_centre(e_, v, float_expansion_cone(e_, v), s_.placement);
+        if (float_centre_[v]) p = place_at_point(e_, v, *float_centre_[v]);
         if (p)
           ++stats_.placements_float_centre;
         else

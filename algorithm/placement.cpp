@@ -132,12 +132,11 @@ bool certified_closed(const Embedding& e, VertexId v, const FloatCone& cone,
   return proves_no_common_point(support);
 }
 
-std::optional<Placement> place_at_float_centre(const Embedding& e, VertexId v, const FloatCone& cone,
-                                               const PlacementOptions& options) {
+std::optional<std::array<double, 3>> float_centre(const FloatCone& cone, const lp::FloatChebyshev& g,
+                                                  const PlacementOptions& options) {
   if (options.lp.backend != "certified" || !options.arith.exact()) return std::nullopt;
   if (options.precision != PrecisionPolicy::dyadic && options.precision != PrecisionPolicy::segment)
     return std::nullopt;
-  const lp::FloatChebyshev g = lp::float_chebyshev(cone.rows);
   if (!g.optimal || !(g.radius > 1e-6 * g.scale)) return std::nullopt;
   for (double x : g.centre)
     if (!std::isfinite(x)) return std::nullopt;
@@ -146,11 +145,17 @@ std::optional<Placement> place_at_float_centre(const Embedding& e, VertexId v, c
     const double slack = row[3] - row[0] * g.centre[0] - row[1] * g.centre[1] - row[2] * g.centre[2];
     if (!(n > 0) || !(slack >= 0.5 * g.radius * n)) return std::nullopt;
   }
-  const HPoint q(Rational(g.centre[0]), Rational(g.centre[1]), Rational(g.centre[2]));
+  return g.centre;
+}
+
+std::optional<Placement> place_at_point(const Embedding& e, VertexId v, const std::array<double, 3>& centre) {
+  const HPoint q{Rational(centre[0]), Rational(centre[1]), Rational(centre[2])};
   // The cone is exactly the tets of v with at most one other cluster vertex (expansion_cone.hpp).
+  std::size_t rows = 0;
   for (TetId t : e.mesh.tets_of(v)) {
     const topology::Tet& tet = e.mesh.tet(t);
     if (e.unexpanded_count(tet) - (e.unexpanded[v] ? 1 : 0) >= 2) continue;
+    ++rows;
     std::array<const HPoint*, 4> p;
     for (std::size_t i = 0; i < 4; ++i) p[i] = tet[i] == v ? &q : &e.target[tet[i]];
     if (orient3d(*p[0], *p[1], *p[2], *p[3], e.filter, e.stats) != Sign::positive) return std::nullopt;
@@ -159,9 +164,17 @@ std::optional<Placement> place_at_float_centre(const Embedding& e, VertexId v, c
   out.status = lp::ChebyshevStatus::interior;
   out.position = q;
   out.bits = out.centre_bits = lp::point_bits(to_point3(q));
-  out.rows = cone.rows.size();
+  out.rows = rows;
   out.info.backend = "float-centre";
   return out;
+}
+
+std::optional<Placement> place_at_float_centre(const Embedding& e, VertexId v, const FloatCone& cone,
+                                               const PlacementOptions& options) {
+  if (options.lp.backend != "certified") return std::nullopt;
+  const std::optional<std::array<double, 3>> c = float_centre(cone, lp::float_chebyshev(cone.rows), options);
+  if (!c) return std::nullopt;
+  return place_at_point(e, v, *c);
 }
 
 Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& options,

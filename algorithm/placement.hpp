@@ -70,6 +70,12 @@ bool certified_closed(const Embedding& e, VertexId v, const FloatCone& cone, con
 // positive (exact predicates). No exact LP runs. nullopt: use place_in_cone.
 std::optional<Placement> place_at_float_centre(const Embedding& e, VertexId v, const FloatCone& cone,
                                                const PlacementOptions& options);
+// Its two halves, for a caller that already has the cone's float LP (the expansion loop keeps the
+// centre from classification until the vertex is popped): the float part (applicability, open
+// radius, margin), and the exact check of the point.
+std::optional<std::array<double, 3>> float_centre(const FloatCone& cone, const lp::FloatChebyshev& guess,
+                                                  const PlacementOptions& options);
+std::optional<Placement> place_at_point(const Embedding& e, VertexId v, const std::array<double, 3>& centre);
 
 // Solves the cone's Chebyshev LP and reduces precision. `segment_from`/`segment_to` (optional)
 // give the segment of the segment policy (p_c and the witness).
