@@ -7,12 +7,12 @@
 
 namespace cmx::lp {
 
-namespace {
-// Below this many rows the exact simplex on every row is as quick as a few subproblems.
-constexpr std::size_t kRowGenerationFrom = 24;
-}  // namespace
-
+// Below row_generation_from rows the exact simplex on every row is as quick as a few subproblems.
 Solution certified_solve(const Problem& p) {
+  return certified_solve(p, row_generation_from);
+}
+
+Solution certified_solve(const Problem& p, std::size_t row_generation_from_rows) {
   p.validate();
   const FloatForm form = float_form(p);
   const FloatResult fr = float_simplex(form);
@@ -29,7 +29,7 @@ Solution certified_solve(const Problem& p) {
       s.info.float_pivots = fr.pivots;
       return s;
     }
-    if (p.num_rows() >= kRowGenerationFrom) {
+    if (p.num_rows() >= row_generation_from_rows) {
       if (std::optional<Solution> s = solve_by_row_generation(p, form, fr)) {
         s->info.backend = "certified";
         s->info.fell_back = true;

@@ -13,6 +13,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <deque>
 #include <map>
 #include <random>
@@ -21,10 +22,8 @@
 #include <vector>
 
 #include "lp/backend_registry.hpp"
-#include "lp/certify_basis.hpp"
+#include "lp/certified_solver.hpp"
 #include "lp/chebyshev_center.hpp"
-#include "lp/exact_simplex.hpp"
-#include "lp/float_simplex.hpp"
 #ifdef CMX_HAVE_GLPK
 #include "lp/glpk/glpk_backend.hpp"
 #endif
@@ -153,23 +152,6 @@ const std::vector<std::vector<HalfSpace>>& flat_pool(const benchmark::State& sta
   return p;
 }
 
-// The `certified` backend as it was before row generation: float simplex, certificate, and on
-// failure the exact simplex over every row warm-started from the float basis.
-Solution certified_without_row_generation(const Problem& p) {
-  const FloatForm form = float_form(p);
-  const FloatResult fr = float_simplex(form);
-  if (fr.kind == FloatResult::Kind::optimal) {
-    Certificate cert = certify_basis(p, fr.basis, &form);
-    if (cert.verdict == Certificate::Verdict::optimal) {
-      Solution s;
-      s.status = Status::optimal;
-      s.x = std::move(cert.x);
-      return s;
-    }
-  }
-  return exact_simplex(p, fr.kind == FloatResult::Kind::failed ? nullptr : &fr.basis);
-}
-
 void bm_flat(benchmark::State& state, const char* variant) {
   const auto& instances = flat_pool(state);
   ChebyshevOptions o;
@@ -180,7 +162,7 @@ void bm_flat(benchmark::State& state, const char* variant) {
   int rounds = 0;
   for (auto _ : state) {
     const Problem& p = lps[i++ % lps.size()];
-    const Solution s = old_path ? certified_without_row_generation(p) : solve(p, variant);
+    const Solution s = old_path ? certified_solve(p, SIZE_MAX) : solve(p, variant);
     rounds += s.info.row_rounds;
     benchmark::DoNotOptimize(s.x);
   }
