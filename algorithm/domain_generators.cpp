@@ -9,6 +9,7 @@
 #include "kernel/homogeneous_point.hpp"
 #include "kernel/orient.hpp"
 #include "topology/generators.hpp"
+#include "topology/nobuenoss.hpp"
 
 namespace cmx::algorithm {
 namespace {
@@ -112,6 +113,22 @@ GeneratedDomain thin_slab(std::uint32_t nx, std::uint32_t ny, std::uint64_t pert
                           double amplitude) {
   if (layers != 1 && layers != 2) throw std::invalid_argument("thin_slab: layers must be 1 or 2");
   return perturbed_grid(nx, ny, layers, perturb_seed, amplitude);
+}
+
+GeneratedDomain bings_house(std::uint32_t scale, std::uint64_t perturb_seed, double amplitude) {
+  if (scale < 4 || scale % 2 != 0 || scale > 64)
+    throw std::invalid_argument("bings_house: the scale must be even, at least 4 and at most 64");
+  check_amplitude(amplitude, "bings_house");
+  GeneratedDomain d = from_grid(topology::bings_house_nobuenoss(scale), 0);
+  perturb(d, perturb_seed, amplitude);
+  return d;
+}
+
+GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude) {
+  check_amplitude(amplitude, "knotted_hole");
+  GeneratedDomain d = from_grid(topology::knotted_hole_ball(), 0);
+  perturb(d, perturb_seed, amplitude);
+  return d;
 }
 
 }  // namespace cmx::algorithm

@@ -12,6 +12,10 @@
 //                   the centre), so its boundary is a 2-manifold, and it is simply connected.
 //   thin_slab       nx*ny*layers cells (layers 1 or 2): most tets touch the boundary; with one
 //                   layer every vertex is a boundary vertex.
+//   bings_house     topology::bings_house_nobuenoss: a voxel ball whose interior vertices span
+//                   Bing's house, so the cluster mesh is a NOBUENOSS from the start.
+//   knotted_hole    topology::knotted_hole_ball: Furch's knotted hole, whose cluster mesh erodes
+//                   to a NOBUENOSS under greedy expansion.
 //
 // Perturbation (amplitude > 0): every vertex, interior and boundary alike, in index order, draws
 // an offset amplitude * (2k + 1 - 2^17) / 2^17 per axis with k uniform below 2^17 (a dyadic number
@@ -50,5 +54,10 @@ inline constexpr double default_perturb_amplitude = 0.25;
 // layers: 1 or 2 (std::invalid_argument otherwise).
 [[nodiscard]] GeneratedDomain thin_slab(std::uint32_t nx, std::uint32_t ny, std::uint64_t perturb_seed,
                                         std::uint32_t layers = 1, double amplitude = default_perturb_amplitude);
+
+// scale: even, >= 4 (std::invalid_argument otherwise).
+[[nodiscard]] GeneratedDomain bings_house(std::uint32_t scale, std::uint64_t perturb_seed,
+                                          double amplitude = default_perturb_amplitude);
+[[nodiscard]] GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude = default_perturb_amplitude);
 
 }  // namespace cmx::algorithm

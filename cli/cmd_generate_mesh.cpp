@@ -4,6 +4,8 @@
 //   grid:NX,NY,NZ      Freudenthal grid of NX*NY*NZ unit cells
 //   ball:R             voxelised ball of radius R cells, centred at the origin
 //   slab:NX,NY[,L]     NX*NY*L cells, L = 1 (default) or 2 layers
+//   bings-house[:S]    a ball whose cluster mesh is Bing's house (a NOBUENOSS), S cells per unit
+//   knotted-hole       Furch's knotted hole (its cluster mesh erodes to a NOBUENOSS)
 // --perturb SEED jitters every vertex by a dyadic offset of at most A (default 0.25) per axis,
 // keeping only offsets after which all its tets stay strictly positive (exact). OUT's extension
 // picks the format (io::write_tet_mesh): .ovm keeps the exact positions (as "str_exact_position";
@@ -31,7 +33,10 @@ constexpr const char* usage =
     "usage: cmx generate-mesh --shape SHAPE [--perturb SEED] [--amplitude A] -o OUT\n"
     "Writes a ball-topology test mesh with all tets positively oriented.\n"
     "  --shape SHAPE   grid:NX,NY,NZ (Freudenthal grid of unit cells), ball:R (voxelised ball of\n"
-    "                  radius R cells), slab:NX,NY[,LAYERS] (1 or 2 layers of cells)\n"
+    "                  radius R cells), slab:NX,NY[,LAYERS] (1 or 2 layers of cells),\n"
+    "                  bings-house[:S] (a ball whose interior is Bing's house, S even in [4,64],\n"
+    "                  default 4), knotted-hole (Furch's knotted hole); the last two get stuck\n"
+    "                  in a NOBUENOSS under plain greedy expansion\n"
     "  --perturb SEED  jitter every vertex (seeded, dyadic offsets, kept only when its tets stay\n"
     "                  positive); without it the vertices are integer points\n"
     "  --amplitude A   largest jitter per axis, in cells (default 0.25)\n"
@@ -62,11 +67,13 @@ std::optional<std::vector<std::uint32_t>> parse_dimensions(std::string_view text
 }
 
 struct ShapeRequest {
-  char kind = 0;  // 'g' grid, 'b' ball, 's' slab
+  char kind = 0;  // 'g' grid, 'b' ball, 's' slab, 'h' Bing's house, 'k' knotted hole
   std::vector<std::uint32_t> dims;
 };
 
 std::optional<ShapeRequest> parse_shape(const std::string& text) {
+  if (text == "bings-house") return ShapeRequest{'h', {4}};
+  if (text == "knotted-hole") return ShapeRequest{'k', {}};
   const auto colon = text.find(':');
   if (colon == std::string::npos) return std::nullopt;
   const std::string name = text.substr(0, colon);
@@ -75,6 +82,7 @@ std::optional<ShapeRequest> parse_shape(const std::string& text) {
   const std::size_t n = dims->size();
   if (name == "grid" && n == 3) return ShapeRequest{'g', *dims};
   if (name == "ball" && n == 1) return ShapeRequest{'b', *dims};
+  if (name == "bings-house" && n == 1) return ShapeRequest{'h', *dims};
   if (name == "slab" && (n == 2 || (n == 3 && (*dims)[2] <= 2))) return ShapeRequest{'s', *dims};
   return std::nullopt;
 }
@@ -82,6 +90,8 @@ std::optional<ShapeRequest> parse_shape(const std::string& text) {
 std::uint64_t cell_count(const ShapeRequest& s) {
   const auto& d = s.dims;
   if (s.kind == 'b') return 8 * std::uint64_t{d[0]} * d[0] * d[0];  // the bounding grid
+  if (s.kind == 'h') return 400 * std::uint64_t{d[0]} * d[0] * d[0];  // the bounding box, roughly
+  if (s.kind == 'k') return 0;  // fixed, about 10,000 cells
   std::uint64_t cells = std::uint64_t{d[0]} * d[1];
   return cells * (d.size() == 3 ? d[2] : 1);
 }
@@ -105,7 +115,7 @@ int run(const std::vector<std::string>& args) {
   }
   if (shape_text.empty() || output.empty()) return usage_error("--shape and -o are required");
   const auto shape = parse_shape(shape_text);
-  if (!shape) return usage_error("bad shape '" + shape_text + "' (grid:NX,NY,NZ, ball:R or slab:NX,NY[,1|2])");
+  if (!shape) return usage_error("bad shape '" + shape_text + "' (grid:NX,NY,NZ, ball:R, slab:NX,NY[,1|2], bings-house[:S] or knotted-hole)");
   if (cell_count(*shape) > max_cells)
     return usage_error("'" + shape_text + "' has more than " + std::to_string(max_cells) + " cells");
   if (!io::is_writable_mesh_path(output)) return usage_error("cannot write '" + output + "': unknown format");
@@ -130,6 +140,8 @@ int run(const std::vector<std::string>& args) {
     const auto& d = shape->dims;
     if (shape->kind == 'g') domain = algorithm::perturbed_grid(d[0], d[1], d[2], seed, amplitude);
     else if (shape->kind == 'b') domain = algorithm::voxel_ball(d[0], seed, amplitude);
+    else if (shape->kind == 'h') domain = algorithm::bings_house(d[0], seed, amplitude);
+    else if (shape->kind == 'k') domain = algorithm::knotted_hole(seed, amplitude);
     else domain = algorithm::thin_slab(d[0], d[1], seed, d.size() == 3 ? d[2] : 1, amplitude);
   } catch (const std::invalid_argument& e) {
     return usage_error(e.what());
