@@ -12,6 +12,7 @@
 #include "kernel/orient.hpp"
 #include "topology/ball_check.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/nobuenoss.hpp"
 
 using cmx::Rational;
 using cmx::algorithm::GeneratedDomain;
@@ -171,4 +172,26 @@ TEST_CASE("domain generators reject bad arguments") {
   CHECK_THROWS_AS((void)alg::voxel_ball(0, 1), std::invalid_argument);
   CHECK_THROWS_AS((void)alg::thin_slab(3, 3, 1, 3), std::invalid_argument);
   CHECK_THROWS_AS((void)alg::thin_slab(3, 3, 1, 0), std::invalid_argument);
+}
+
+TEST_CASE("bings_house and knotted_hole: positive balls whose interior erodes to a NOBUENOSS") {
+  const GeneratedDomain house = alg::bings_house(4, 2);
+  CHECK(cmx::topology::check_ball(house.mesh).ok);
+  std::vector<cmx::HPoint> p;
+  for (const auto& x : house.positions) p.emplace_back(x[0], x[1], x[2]);
+  std::size_t positive = 0;
+  for (auto t : house.mesh.live_tets()) {
+    const auto& tet = house.mesh.tet(t);
+    positive += cmx::orient3d(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]) == cmx::Sign::positive ? 1 : 0;
+  }
+  CHECK(positive == house.mesh.num_tets());
+  CHECK(house.mesh.num_tets() == cmx::topology::bings_house_nobuenoss(4).mesh.num_tets());
+  CHECK_THROWS_AS((void)alg::bings_house(5, 2), std::invalid_argument);
+  CHECK_THROWS_AS((void)alg::bings_house(2, 2), std::invalid_argument);
+  const GeneratedDomain knot = alg::knotted_hole(0, 0.0);
+  CHECK(cmx::topology::check_ball(knot.mesh).ok);
+  CHECK(knot.mesh.num_tets() == 59286);
+  std::size_t integer = 0;
+  for (const auto& x : knot.positions) integer += is_integer_point(x) ? 1 : 0;
+  CHECK(integer == knot.positions.size());  // amplitude 0: the lattice itself
 }

@@ -263,6 +263,21 @@ TEST_CASE("cmx map: the time limit exits 6 and leaves no output, an existing out
   CHECK(slurp(out + ".tmap") == "old content\n");
 }
 
+TEST_CASE("cmx map: a NOBUENOSS cluster mesh exits 7 (stuck), says so in the report and writes no map") {
+  // Bing's house: the interior vertices span a 2-complex in which every edge lies in two or more
+  // triangles, so no cluster vertex satisfies Eq. (1) and nothing can be expanded.
+  const Case c = make_case("bings-house", "tet");
+  const std::string out = c.dir + "/stuck";
+  const std::string report = c.dir + "/stuck.json";
+  const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", out, "--report", report});
+  CHECK(r.exit_code == 7);
+  CHECK(r.err.find("NOBUENOSS") != std::string::npos);
+  CHECK_FALSE(fs::exists(out + ".tmap"));
+  const std::string json = slurp(report);
+  CHECK(json.find("\"status\": \"stuck\"") != std::string::npos);
+  CHECK(json.find("none satisfies Eq. (1)") != std::string::npos);
+}
+
 TEST_CASE("cmx map --arith: double maps and verifies, too few bits exits 8 saying where, bad names exit 2") {
   const Case c = make_case("grid:3,3,3", "sphere");
   const std::string out = c.dir + "/dbl";
