@@ -41,7 +41,11 @@ FloatCone float_expansion_cone(const Embedding& e, VertexId v) {
 }
 
 std::array<double, 4> float_inner_row(const HPoint& a, const HPoint& b, const HPoint& c) {
-  const auto p = a.approx(), q = b.approx(), r = c.approx();
+  return float_inner_row(a.approx(), b.approx(), c.approx());
+}
+
+std::array<double, 4> float_inner_row(const std::array<double, 3>& p, const std::array<double, 3>& q,
+                                      const std::array<double, 3>& r) {
   // Inner side of (p, q, r): orient3d(p, q, r, x) < 0, i.e. n . x < n . p with n = (q-p) x (r-p).
   const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
   const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};

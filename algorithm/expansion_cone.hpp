@@ -45,6 +45,9 @@ struct FloatCone {
 FloatCone float_expansion_cone(const Embedding& e, VertexId v);
 // One such row: the inner side of the plane through a, b, c from their nearest doubles.
 std::array<double, 4> float_inner_row(const HPoint& a, const HPoint& b, const HPoint& c);
+// The same from points already in doubles.
+std::array<double, 4> float_inner_row(const std::array<double, 3>& p, const std::array<double, 3>& q,
+                                      const std::array<double, 3>& r);
 
 // The exact constraint of one tet of v's star (as gather_expansion_cone makes it).
 InnerHalfSpace cone_halfspace(const Embedding& e, VertexId v, TetId t);

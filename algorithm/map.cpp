@@ -7,6 +7,7 @@
 #include "algorithm/collapse_pass.hpp"
 #include "algorithm/embedding.hpp"
 #include "algorithm/invariants.hpp"
+#include "algorithm/merge_pass.hpp"
 #include "algorithm/preprocess.hpp"
 #include "algorithm/validate_problem.hpp"
 #include "topology/cluster_links.hpp"
@@ -141,6 +142,23 @@ void make_doubles(Embedding& e, const MapOptions& options, Clock::time_point sta
   s.lps += r.doubles.lps;
 }
 
+// Merges (merge_pass.hpp), exact runs only: a merge may pick a midpoint, which a non-exact
+// arithmetic may not hold. Cut short by the time limit they are all undone, so that the result
+// does not depend on where the time ran out.
+void merge(Embedding& e, const MapOptions& options, Clock::time_point start, MapStatistics& s) {
+  const Deadline deadline = deadline_of(options, start);
+  std::optional<Embedding> before;
+  if (deadline) before = e;
+  const MergeResult m = merge_added_vertices(e, s.input_vertices, options.placement, deadline);
+  if (m.stopped) {
+    e = std::move(*before);
+    s.merge_stopped_at_time_limit = true;
+    return;
+  }
+  s.merged = m.removed;
+  s.collapsed += m.removed;
+}
+
 void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapOptions& options, Clock::time_point start,
                 Embedding& e, MapResult& r) {
   MapStatistics& s = r.stats;
@@ -157,6 +175,7 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
   if (out.outcome == MapOutcome::success && options.collapse) {
     phase = Clock::now();
     s.collapsed = collapse_added_vertices(e, s.input_vertices);
+    if (options.merge && options.placement.arith.exact()) merge(e, options, start, s);
     s.seconds_collapse = seconds_since(phase);
   }
   compact_vertices(e, s.input_vertices);  // vertices collapsed away, or inflation splits undone

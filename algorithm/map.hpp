@@ -64,6 +64,7 @@ struct MapOptions {
   double time_limit_seconds = 0;              // 0 = none
   bool check = false;                         // assert every invariant after every step (slow)
   bool collapse = true;                       // collapse added vertices when the map stays valid
+  bool merge = true;                          // ... and merge them, moving the vertex kept (merge_pass.hpp)
   SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/double_output.hpp)
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
   bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)
@@ -97,7 +98,9 @@ struct MapStatistics {
   std::size_t relaxations = 0;                // expanded vertices re-centred in their star's kernel
   std::size_t smoothing_moves = 0;            // Laplacian moves kept (paper Sec. 4.2.4)
   std::size_t inflation_splits = 0;
-  std::size_t collapsed = 0;                  // added vertices collapsed away at the end
+  std::size_t collapsed = 0;                  // added vertices collapsed away at the end (merges included)
+  std::size_t merged = 0;                     // of those, removed by merges and the collapses they enabled (merge_pass.hpp)
+  bool merge_stopped_at_time_limit = false;   // the time limit cut the merges short (all undone)
   std::size_t refinement_collapses = 0;       // added vertices collapsed right after their refinement
   // Double output.
   std::size_t chebyshev_moves = 0;            // exact positions changed by the Chebyshev pass

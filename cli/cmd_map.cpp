@@ -33,7 +33,7 @@ namespace {
 constexpr const char* usage =
     "usage: cmx map DOMAIN (--boundary B.txt | --codomain MESH | --shape SHAPE) [-o OUT]\n"
     "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--time-limit S] [--check]\n"
-    "               [--no-collapse] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
+    "               [--no-collapse] [--no-merge] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
     "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
     "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--subclusters N]\n"
@@ -54,6 +54,9 @@ constexpr const char* usage =
     "  --check           assert every invariant after every step (slow; for testing)\n"
     "  --no-collapse     keep every added vertex (by default added vertices are collapsed away at\n"
     "                    the end wherever the map stays valid)\n"
+    "  --no-merge        collapse added vertices only where the vertex kept can stay in place (by\n"
+    "                    default an added vertex is also merged into an added neighbour that moves,\n"
+    "                    in source and target, into its new star's kernel)\n"
     "  --no-collapse-refinement  do not collapse, right after each star-shapification, the\n"
     "                    vertices it added (by default they are collapsed wherever every invariant\n"
     "                    survives: paper Sec. 4.2.2)\n"
@@ -201,6 +204,8 @@ std::string parse_args(const std::vector<std::string>& args, Args& a) {
       a.options.collapse_refinement = false;
     } else if (x == "--no-collapse") {
       a.options.collapse = false;
+    } else if (x == "--no-merge") {
+      a.options.merge = false;
     } else if (x == "--check") {
       a.check = true;
     } else if (x == "--quiet" || x == "-q") {
@@ -337,6 +342,8 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   opt.str("snap", std::string(algorithm::to_string(snap_used(a))));
   opt.num("smooth", std::uint64_t(a.options.smooth_every));
   opt.flag("collapse_refinement", a.options.collapse_refinement);
+  opt.flag("collapse", a.options.collapse);
+  opt.flag("merge", a.options.collapse && a.options.merge);
   opt.num("subclusters", std::uint64_t(a.options.subclusters < 2 ? 0 : a.options.subclusters));
   opt.num("time_limit", a.time_limit);
   j.obj("options", opt);
@@ -366,6 +373,8 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   ex.num("smoothing_moves", std::uint64_t(s.smoothing_moves));
   ex.num("bends", std::uint64_t(s.bends)).num("relaxations", std::uint64_t(s.relaxations)).num("pushes", std::uint64_t(s.pushes)).num("inflation_splits", std::uint64_t(s.inflation_splits));
   ex.num("collapsed", std::uint64_t(s.collapsed));
+  ex.num("merged", std::uint64_t(s.merged));
+  ex.flag("merge_stopped_at_time_limit", s.merge_stopped_at_time_limit);
   ex.num("refinement_collapses", std::uint64_t(s.refinement_collapses));
   ex.num("lps", std::uint64_t(s.lps)).num("lps_certified", std::uint64_t(s.lps_certified));
   ex.num("lps_exact_fallback", std::uint64_t(s.lps_fell_back));

@@ -178,6 +178,25 @@ TEST_CASE("without the final collapses every added vertex is kept, and the map i
   CHECK(collapsed.stats.collapsed == kept.stats.output_vertices - collapsed.stats.output_vertices);
 }
 
+TEST_CASE("merges remove added vertices that plain collapses keep, and the map stays valid") {
+  std::size_t merged = 0;
+  for (const char* shape : shapes) {
+    CAPTURE(shape);
+    const MapProblem p = problem_from(thin_slab(8, 6, 2, 1), shape);  // no interior vertex
+    MapOptions off;
+    off.merge = false;
+    const MapResult plain = map_checked(p, off);
+    const MapResult r = map_checked(p);
+    CHECK(plain.stats.merged == 0);
+    // The plain collapses come first and are the same; each merge (or collapse it enables)
+    // removes one more vertex.
+    CHECK(r.stats.output_vertices + r.stats.merged == plain.stats.output_vertices);
+    CHECK(r.stats.collapsed == plain.stats.collapsed + r.stats.merged);
+    merged += r.stats.merged;
+  }
+  CHECK(merged > 0);
+}
+
 TEST_CASE("the independent verifier rejects a broken map") {
   const MapProblem p = problem_from(perturbed_grid(2, 2, 2, 1), "tet");
   MapResult r = map_to_domain(p);

@@ -263,6 +263,24 @@ TEST_CASE("cmx map: the time limit exits 6 and leaves no output, an existing out
   CHECK(slurp(out + ".tmap") == "old content\n");
 }
 
+TEST_CASE("cmx map --no-merge keeps the vertices merges would remove, and both maps verify") {
+  const Case c = make_case("slab:8,6", "star:2");  // one layer: every input vertex on the boundary
+  const std::string merged = c.dir + "/merged", plain = c.dir + "/plain";
+  auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", merged, "--report", merged + ".json"});
+  REQUIRE(r.exit_code == 0);
+  r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", plain, "--report", plain + ".json", "--no-merge"});
+  REQUIRE(r.exit_code == 0);
+  const std::string with = slurp(merged + ".json"), without = slurp(plain + ".json");
+  CHECK(with.find("\"merge\": true") != std::string::npos);
+  CHECK(without.find("\"merge\": false") != std::string::npos);
+  CHECK(without.find("\"merged\": 0,") != std::string::npos);
+  CHECK(with.find("\"merged\": 0,") == std::string::npos);
+  if (have_checker()) {
+    CHECK(independent_check(c, merged + ".tmap"));
+    CHECK(independent_check(c, plain + ".tmap"));
+  }
+}
+
 TEST_CASE("cmx map: a NOBUENOSS cluster mesh exits 7 (stuck), says so in the report and writes no map") {
   // Bing's house: the interior vertices span a 2-complex in which every edge lies in two or more
   // triangles, so no cluster vertex satisfies Eq. (1) and nothing can be expanded.

@@ -1,0 +1,162 @@
+#include "algorithm/merge_pass.hpp"
+
+#include <array>
+#include <optional>
+#include <set>
+#include <vector>
+
+#include "algorithm/collapse_pass.hpp"
+#include "algorithm/expansion_cone.hpp"
+#include "algorithm/map_error.hpp"
+#include "topology/complex_queries.hpp"
+#include "topology/mesh_edits.hpp"
+
+namespace cmx::algorithm {
+
+namespace {
+
+using Approx = std::array<double, 3>;
+
+// Below this float Chebyshev radius (relative to the rows' scale) no exact LP is tried.
+constexpr double min_float_radius = 1e-11;
+
+class Merger {
+ public:
+  Merger(Embedding& e, std::size_t input_vertices, const PlacementOptions& options)
+      : e_(e), input_(input_vertices), options_(options) {
+    for (const HPoint& p : e_.source) source_approx_.push_back(p.approx());
+    for (const HPoint& p : e_.target) target_approx_.push_back(p.approx());
+  }
+
+  std::optional<VertexId> try_merge(VertexId gone) {
+    if (gone < input_ || e_.boundary[gone]) return std::nullopt;
+    for (VertexId keep : topology::vertex_neighbors(e_.mesh, gone)) {
+      if (keep < input_ || e_.boundary[keep] || e_.unexpanded[keep]) continue;
+      const std::optional<HPoint> from = position(true, keep, gone);
+      if (!from) continue;
+      if (!topology::satisfies_link_condition(e_.mesh, keep, gone)) continue;
+      const std::optional<HPoint> at = position(false, keep, gone);
+      if (!at) continue;
+      if (!topology::collapse_edge(e_.mesh, keep, gone).ok) continue;
+      move(keep, *from, *at);
+      return keep;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  // The tets of keep's star once gone is collapsed into it, each as (tet, the vertex replaced by
+  // keep): gone's tets without keep, and keep's tets without gone.
+  template <class F>
+  void for_each_merged_face(VertexId keep, VertexId gone, F&& f) const {
+    for (const auto& [apex, other] : {std::pair{gone, keep}, std::pair{keep, gone}})
+      for (TetId t : e_.mesh.tets_of(apex)) {
+        const topology::Tet& tet = e_.mesh.tet(t);
+        if (!topology::contains(tet, other)) f(topology::tet_face(tet, topology::local_index(tet, apex)));
+      }
+  }
+
+  ExpansionCone exact_cone(const std::vector<HPoint>& points, VertexId keep, VertexId gone) const {
+    ExpansionCone cone;
+    cone.apex = keep;
+    for_each_merged_face(keep, gone, [&](const topology::Triangle& f) {
+      InnerHalfSpace h = inner_halfspace(points[f[0]], points[f[1]], points[f[2]]);
+      if (h.is_degenerate()) cone.degenerate = true;
+      cone.halfspaces.push_back(std::move(h));
+    });
+    return cone;
+  }
+
+  std::vector<std::array<double, 4>> float_rows(const std::vector<Approx>& approx, VertexId keep,
+                                                VertexId gone) const {
+    std::vector<std::array<double, 4>> rows;
+    for_each_merged_face(keep, gone, [&](const topology::Triangle& f) {
+      rows.push_back(float_inner_row(approx[f[0]], approx[f[1]], approx[f[2]]));
+    });
+    return rows;
+  }
+
+  // Every tet of the merged star strictly positive with keep at c (filtered exact predicates,
+  // much cheaper than the exact half-spaces on long coordinates).
+  bool positive_at(std::vector<HPoint>& points, bool source, VertexId keep, VertexId gone, const HPoint& c) {
+    const HPoint saved = points[keep];
+    points[keep] = c;
+    bool ok = true;
+    for (const auto& [apex, other] : {std::pair{gone, keep}, std::pair{keep, gone}})
+      for (TetId t : e_.mesh.tets_of(apex)) {
+        topology::Tet x = e_.mesh.tet(t);
+        if (!ok || topology::contains(x, other)) continue;
+        x[topology::local_index(x, apex)] = keep;
+        ok = (source ? e_.orient_source(x) : e_.orient_target(x)) == Sign::positive;
+      }
+    points[keep] = saved;
+    return ok;
+  }
+
+  // A point strictly inside the merged star's kernel on `points` (see the header), or nullopt.
+  std::optional<HPoint> position(bool source, VertexId keep, VertexId gone) {
+    std::vector<HPoint>& points = source ? e_.source : e_.target;
+    const std::vector<Approx>& approx = source ? source_approx_ : target_approx_;
+    const HPoint middle((points[keep].coordinate(0) + points[gone].coordinate(0)) / Rational(2),
+                        (points[keep].coordinate(1) + points[gone].coordinate(1)) / Rational(2),
+                        (points[keep].coordinate(2) + points[gone].coordinate(2)) / Rational(2));
+    // Copies: positive_at moves points[keep] while it tests.
+    const std::array<HPoint, 3> candidates{points[keep], points[gone], middle};
+    for (const HPoint& c : candidates)
+      if (positive_at(points, source, keep, gone, c)) return c;
+    const lp::FloatChebyshev f = lp::float_chebyshev(float_rows(approx, keep, gone));
+    if (!f.optimal || !(f.radius > min_float_radius * f.scale)) return std::nullopt;
+    const ExpansionCone cone = exact_cone(points, keep, gone);
+    if (cone.degenerate) return std::nullopt;
+    const Placement p = place_in_cone(cone, options_);
+    if (!p.ok() || !strictly_inside(cone, p.position)) return std::nullopt;
+    return p.position;
+  }
+
+  void move(VertexId keep, const HPoint& from, const HPoint& at) {
+    e_.source[keep] = from;
+    e_.target[keep] = at;
+    source_approx_[keep] = from.approx();
+    target_approx_[keep] = at.approx();
+    for (TetId t : e_.mesh.tets_of(keep))
+      if (e_.orient_target(e_.mesh.tet(t)) != Sign::positive || e_.orient_source(e_.mesh.tet(t)) != Sign::positive)
+        throw MapError(MapErrorKind::internal,
+                       "a merge left a tet around vertex " + std::to_string(keep) + " that is not positive");
+  }
+
+  Embedding& e_;
+  std::size_t input_;
+  const PlacementOptions& options_;
+  std::vector<Approx> source_approx_, target_approx_;
+};
+
+}  // namespace
+
+MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,
+                                 const std::optional<std::chrono::steady_clock::time_point>& deadline) {
+  Merger merger(e, input_vertices, options);
+  std::set<VertexId> work;
+  for (std::size_t v = input_vertices; v < e.num_vertices(); ++v)
+    if (!e.mesh.tets_of(VertexId(v)).empty()) work.insert(VertexId(v));
+  MergeResult out;
+  std::size_t& removed = out.removed;
+  for (std::size_t step = 0; !work.empty(); ++step) {
+    if (deadline && step % 64 == 0 && std::chrono::steady_clock::now() > *deadline) {
+      out.stopped = true;
+      return out;
+    }
+    const VertexId v = *work.rbegin();
+    work.erase(v);
+    if (e.mesh.tets_of(v).empty()) continue;
+    std::optional<VertexId> keep = try_collapse(e, v);
+    if (!keep) keep = merger.try_merge(v);
+    if (!keep) continue;
+    ++removed;
+    for (VertexId w : topology::vertex_neighbors(e.mesh, *keep))
+      if (w >= input_vertices) work.insert(w);
+    if (*keep >= input_vertices) work.insert(*keep);
+  }
+  return out;
+}
+
+}  // namespace cmx::algorithm

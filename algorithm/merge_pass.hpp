@@ -1,0 +1,39 @@
+#pragma once
+// Merges of added vertices (the second half of the collapse pass, collapse_pass.hpp): an added
+// vertex `gone` is collapsed into an added neighbour `keep`, which then moves, in the source and
+// in the target, to a point strictly inside its new star's kernel.
+//
+// Why: the plain collapse keeps `keep` where it is, and on inputs without interior vertices
+// (one-layer slabs) most added vertices are left because of that. Both positions of an added
+// vertex are free. It is interior, and its source position only has to keep the source tets
+// positive: the output's source mesh must tile the input domain, not refine the input tets (the
+// verifier checks the boundary, input vertices in place, a ball, every tet positive). Measured in
+// bench/RESULTS.md ("dataset").
+//
+// The point: keep's own position, gone's, or their midpoint when one is strictly inside (exact
+// tests, no LP); else the precision-reduced Chebyshev centre when the float LP finds room. The
+// source is tried first (its coordinates have few bits), the link condition next, the target last.
+// A float screen only ever skips a merge, which is always safe; whatever is taken is checked
+// exactly: every tet around `keep` is strictly positive in both afterwards (else MapError
+// internal, which would be a bug).
+#include <chrono>
+#include <cstddef>
+#include <optional>
+
+#include "algorithm/embedding.hpp"
+#include "algorithm/placement.hpp"
+
+namespace cmx::algorithm {
+
+struct MergeResult {
+  std::size_t removed = 0;   // vertices left without tets (compact_vertices removes them)
+  bool stopped = false;      // the deadline passed first: `e` is partly merged (the caller undoes)
+};
+
+// Merges and the plain collapses they make possible, over the added vertices (ids >=
+// input_vertices), highest id first, a vertex coming back only when a star it is in changed.
+// Precondition: no cluster vertex left. Stops when `deadline` (if any) has passed.
+MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,
+                                 const std::optional<std::chrono::steady_clock::time_point>& deadline = {});
+
+}  // namespace cmx::algorithm
