@@ -31,8 +31,9 @@ class Merger {
   std::optional<VertexId> try_merge(VertexId gone) {
     if (gone < input_ || e_.boundary[gone]) return std::nullopt;
     for (VertexId keep : topology::vertex_neighbors(e_.mesh, gone)) {
-      if (keep < input_ || e_.boundary[keep] || e_.unexpanded[keep]) continue;
-      const std::optional<HPoint> from = position(true, keep, gone);
+      if (e_.boundary[keep] || e_.unexpanded[keep]) continue;
+      // An input vertex keeps its source position; only its target may move.
+      const std::optional<HPoint> from = keep < input_ ? own_source(keep, gone) : position(true, keep, gone);
       if (!from) continue;
       if (!topology::satisfies_link_condition(e_.mesh, keep, gone)) continue;
       const std::optional<HPoint> at = position(false, keep, gone);
@@ -94,6 +95,12 @@ class Merger {
   }
 
   // A point strictly inside the merged star's kernel on `points` (see the header), or nullopt.
+  std::optional<HPoint> own_source(VertexId keep, VertexId gone) {
+    const HPoint here = e_.source[keep];
+    if (positive_at(e_.source, true, keep, gone, here)) return here;
+    return std::nullopt;
+  }
+
   std::optional<HPoint> position(bool source, VertexId keep, VertexId gone) {
     std::vector<HPoint>& points = source ? e_.source : e_.target;
     const std::vector<Approx>& approx = source ? source_approx_ : target_approx_;

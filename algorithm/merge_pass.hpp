@@ -1,11 +1,12 @@
 #pragma once
 // Merges of added vertices (the second half of the collapse pass, collapse_pass.hpp): an added
-// vertex `gone` is collapsed into an added neighbour `keep`, which then moves, in the source and
-// in the target, to a point strictly inside its new star's kernel.
+// vertex `gone` is collapsed into an interior neighbour `keep`, which then moves to a point
+// strictly inside its new star's kernel: in the source and in the target when `keep` is an added
+// vertex too, in the target only when it is an input vertex (whose source position is kept).
 //
 // Why: the plain collapse keeps `keep` where it is, and on inputs without interior vertices
 // (one-layer slabs) most added vertices are left because of that. Both positions of an added
-// vertex are free. It is interior, and its source position only has to keep the source tets
+// vertex are free, and the target position of any interior vertex is. It is interior, and its source position only has to keep the source tets
 // positive: the output's source mesh must tile the input domain, not refine the input tets (the
 // verifier checks the boundary, input vertices in place, a ball, every tet positive). Measured in
 // bench/RESULTS.md ("dataset").

@@ -195,6 +195,21 @@ TEST_CASE("merges remove added vertices that plain collapses keep, and the map s
     merged += r.stats.merged;
   }
   CHECK(merged > 0);
+  // With interior input vertices, added vertices also merge into them (their targets move, their
+  // source positions stay: the verification's input_kept).
+  std::size_t into_input = 0;
+  for (const char* shape : shapes) {
+    CAPTURE(shape);
+    const MapProblem p = problem_from(perturbed_grid(6, 5, 5, 3), shape);
+    MapOptions off;
+    off.merge = false;
+    const MapResult plain = map_checked(p, off);
+    const MapResult r = map_checked(p);
+    CHECK(r.verification.input_kept);
+    CHECK(r.stats.output_vertices + r.stats.merged == plain.stats.output_vertices);
+    into_input += r.stats.merged;
+  }
+  CHECK(into_input > 0);
 }
 
 TEST_CASE("the independent verifier rejects a broken map") {
