@@ -78,29 +78,35 @@ class Merger {
   }
 
   // Every tet of the merged star strictly positive with keep at c (filtered exact predicates,
-  // much cheaper than the exact half-spaces on long coordinates).
+  // much cheaper than the exact half-spaces on long coordinates). The star's two halves: gone's
+  // tets rewritten with keep, and keep's own tets. A half whose geometry c leaves as it is
+  // (gone's at gone's position, keep's at keep's) is positive already, the map being valid, and
+  // is not tested again.
   bool positive_at(std::vector<HPoint>& points, bool source, VertexId keep, VertexId gone, const HPoint& c) {
     const HPoint saved = points[keep];
     points[keep] = c;
     bool ok = true;
-    for (const auto& [apex, other] : {std::pair{gone, keep}, std::pair{keep, gone}})
+    for (const auto& [apex, other] : {std::pair{gone, keep}, std::pair{keep, gone}}) {
+      if (c == saved ? apex == keep : c == points[gone] && apex == gone) continue;
       for (TetId t : e_.mesh.tets_of(apex)) {
         topology::Tet x = e_.mesh.tet(t);
         if (!ok || topology::contains(x, other)) continue;
         x[topology::local_index(x, apex)] = keep;
         ok = (source ? e_.orient_source(x) : e_.orient_target(x)) == Sign::positive;
       }
+    }
     points[keep] = saved;
     return ok;
   }
 
-  // A point strictly inside the merged star's kernel on `points` (see the header), or nullopt.
+  // keep's own source position when it works (an input vertex keeps it), or nullopt.
   std::optional<HPoint> own_source(VertexId keep, VertexId gone) {
     const HPoint here = e_.source[keep];
     if (positive_at(e_.source, true, keep, gone, here)) return here;
     return std::nullopt;
   }
 
+  // A point strictly inside the merged star's kernel on `points` (see the header), or nullopt.
   std::optional<HPoint> position(bool source, VertexId keep, VertexId gone) {
     std::vector<HPoint>& points = source ? e_.source : e_.target;
     const std::vector<Approx>& approx = source ? source_approx_ : target_approx_;

@@ -5,11 +5,11 @@
 // vertex too, in the target only when it is an input vertex (whose source position is kept).
 //
 // Why: the plain collapse keeps `keep` where it is, and on inputs without interior vertices
-// (one-layer slabs) most added vertices are left because of that. Both positions of an added
-// vertex are free, and the target position of any interior vertex is. It is interior, and its source position only has to keep the source tets
-// positive: the output's source mesh must tile the input domain, not refine the input tets (the
-// verifier checks the boundary, input vertices in place, a ball, every tet positive). Measured in
-// bench/RESULTS.md ("dataset").
+// (one-layer slabs) most added vertices are left because of that. The target position of any
+// interior vertex is free, and so is the source position of an added one: it only has to keep the
+// source tets positive, since the output's source mesh must tile the input domain, not refine
+// the input tets (the verifier checks the boundary, input vertices in place, a ball, every tet
+// positive). Measured in bench/RESULTS.md ("dataset").
 //
 // The point: keep's own position, gone's, or their midpoint when one is strictly inside (exact
 // tests, no LP); else the precision-reduced Chebyshev centre when the float LP finds room. The
