@@ -216,13 +216,31 @@ class Preprocessor {
     }
   }
 
+  // Doubles resolve a point near p_c only to within ulp(p_c): about 4e-19 next to 1/512, but
+  // down to the denormals next to 0. The last vertices of an expansion crowd around p_c (thin
+  // inputs: within 1e-20 to 1e-70 of it), and their doubles keep them apart only where p_c's
+  // coordinates are 0. So the few-bit centre gets as many coordinates zeroed as keeps it strictly
+  // inside every constraint (the origin itself when the origin is inside); measured in
+  // docs/algorithm.md, "Shrink point".
+  lp::Point3 with_zero_coordinates(const lp::Point3& centre) const {
+    // Masks of the coordinates set to zero, most zeros first.
+    for (const unsigned mask : {7u, 3u, 5u, 6u, 1u, 2u, 4u}) {
+      lp::Point3 q = centre;
+      for (unsigned i = 0; i < 3; ++i)
+        if (mask & (1u << i)) q[i] = Rational(0);
+      if (q != centre && lp::strictly_inside(accepted_, q)) return q;
+    }
+    return centre;
+  }
+
   // p_c: the Chebyshev centre of everything accepted, with few bits, then the shrink.
   void finish() {
     solve();
     if (!centre_) throw MapError(MapErrorKind::internal, "the shrink point constraints lost their interior");
     result_.shrink_radius = to_double(last_.radius);
     const lp::FewBitResult few = lp::few_bits_by_dyadics(accepted_, last_.center);
-    e_.center = e_.arith.round(HPoint(few.point[0], few.point[1], few.point[2]));
+    const lp::Point3 p = with_zero_coordinates(few.point);
+    e_.center = e_.arith.round(HPoint(p[0], p[1], p[2]));
     if (!e_.arith.exact() &&
         !lp::strictly_inside(accepted_,
                              {e_.center.coordinate(0), e_.center.coordinate(1), e_.center.coordinate(2)})) {

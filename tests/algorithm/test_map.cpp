@@ -135,9 +135,31 @@ TEST_CASE("smoothing every few expansions keeps every invariant and moves vertic
   CHECK(moves > 0);
 }
 
+TEST_CASE("the shrink point has as many zero coordinates as its constraints allow") {
+  // Doubles resolve points near p_c far better next to 0 (docs/algorithm.md, "Shrink point").
+  // The generated shapes are centred at the origin: p_c is the origin itself.
+  const MapProblem p = problem_from(perturbed_grid(4, 4, 3, 5), "tet");
+  const MapResult at_origin = map_checked(p);
+  CHECK(at_origin.center == HPoint());
+  // The same boundary moved by +5 along x: y and z can still be 0, x cannot.
+  MapProblem moved_x = p;
+  for (auto& q : moved_x.boundary_positions) q[0] += 5;
+  const MapResult r = map_checked(moved_x);
+  CHECK(r.center.coordinate(0) != 0);
+  CHECK(r.center.coordinate(1) == 0);
+  CHECK(r.center.coordinate(2) == 0);
+  // Moved along every axis: no coordinate can be 0, and the map is as valid.
+  MapProblem moved = p;
+  for (auto& q : moved.boundary_positions)
+    for (auto& c : q) c += 5;
+  const MapResult far = map_checked(moved);
+  for (int i = 0; i < 3; ++i) CHECK(far.center.coordinate(i) != 0);
+}
+
 TEST_CASE("collapsing what each star-shapification added keeps every invariant, and collapses") {
-  // A one-layer slab (no interior vertex) onto the tetrahedron: three star-shapifications.
-  const MapProblem p = problem_from(thin_slab(6, 5, 1, 1), "tet");
+  // A one-layer slab (no interior vertex) onto the tetrahedron: five star-shapifications, three
+  // of whose added vertices collapse right away (measured with the origin as shrink point).
+  const MapProblem p = problem_from(thin_slab(9, 8, 3, 1), "tet");
   const MapResult r = map_checked(p);  // the default; every invariant checked after every step
   CHECK(r.stats.expansions_star_shapified > 0);
   CHECK(r.stats.refinement_collapses > 0);
