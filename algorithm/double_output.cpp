@@ -1,6 +1,7 @@
 #include "algorithm/double_output.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <limits>
 #include <unordered_map>
@@ -200,6 +201,68 @@ std::vector<std::array<double, 3>> nearest_doubles(const Embedding& e) {
   return out;
 }
 
+// The double next to nearest = to_double(x) on x's other side (nearest itself when x is a double).
+double other_double(const Rational& x, double nearest) {
+  const Rational n = rational_from_double(nearest);
+  if (n == x) return nearest;
+  return std::nextafter(nearest, n < x ? std::numeric_limits<double>::infinity()
+                                       : -std::numeric_limits<double>::infinity());
+}
+
+bool all_boundary(const Embedding& e, const topology::Tet& t) {
+  return e.boundary[t[0]] && e.boundary[t[1]] && e.boundary[t[2]] && e.boundary[t[3]];
+}
+
+bool positive(const std::vector<std::array<double, 3>>& d, const topology::Tet& t) {
+  return orient3d(d[t[0]].data(), d[t[1]].data(), d[t[2]].data(), d[t[3]].data()) == Sign::positive;
+}
+
+// Boundary vertices never move, so a tet of four boundary vertices that the nearest doubles of
+// prescribed positions invert or flatten (positions that are not doubles: P06) cannot be repaired
+// through interior vertices. One of its vertices takes another of the up to eight doubles around
+// its exact position instead (within one ulp in each coordinate) when that leaves fewer such tets
+// around it; first vertex, then candidate (x, y, xy, z, ...) that does. Interior tets it spoils
+// are the interior repair's to fix. Returns the vertices changed with their doubles.
+std::vector<std::pair<VertexId, std::array<double, 3>>> reround_boundary(const Embedding& e) {
+  std::vector<std::array<double, 3>> d = nearest_doubles(e);
+  const auto bad_around = [&](VertexId v) {
+    std::size_t n = 0;
+    for (TetId t : e.mesh.tets_of(v))
+      if (all_boundary(e, e.mesh.tet(t)) && !positive(d, e.mesh.tet(t))) ++n;
+    return n;
+  };
+  std::vector<std::pair<VertexId, std::array<double, 3>>> changed;
+  for (TetId t : e.mesh.live_tets()) {
+    const topology::Tet& tet = e.mesh.tet(t);
+    if (!all_boundary(e, tet) || positive(d, tet)) continue;
+    for (VertexId v : tet) {
+      const std::array<double, 3> nearest = d[v];
+      std::array<double, 3> other;
+      for (int i = 0; i < 3; ++i) other[std::size_t(i)] = other_double(e.target[v].coordinate(i), nearest[std::size_t(i)]);
+      const std::size_t before = bad_around(v);
+      bool better = false;
+      for (unsigned mask = 1; mask < 8 && !better; ++mask) {
+        std::array<double, 3> c = nearest;
+        bool possible = true;
+        for (std::size_t i = 0; i < 3; ++i)
+          if (mask & (1u << i)) {
+            possible = possible && other[i] != nearest[i];
+            c[i] = other[i];
+          }
+        if (!possible) continue;
+        d[v] = c;
+        better = bad_around(v) < before;
+      }
+      if (better) {
+        changed.emplace_back(v, d[v]);
+        break;
+      }
+      d[v] = nearest;
+    }
+  }
+  return changed;
+}
+
 DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& options, const Deadline& deadline) {
   DoubleMap out;
   if (policy == SnapPolicy::repair) {
@@ -211,12 +274,21 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
     if (out.check.valid()) return out;
     out = {};
   }
+  // Only `repair` may leave the nearest doubles, and only on the boundary (reround_boundary).
+  const std::vector<std::pair<VertexId, std::array<double, 3>>> reround =
+      policy == SnapPolicy::repair ? reround_boundary(e) : decltype(reround_boundary(e)){};
+  const auto rounded = [&] {
+    std::vector<std::array<double, 3>> d = nearest_doubles(e);
+    for (const auto& [v, q] : reround) d[v] = q;
+    return d;
+  };
+  out.boundary_rerounded = reround.size();
   if (policy == SnapPolicy::chebyshev_pass || policy == SnapPolicy::repair) {
     const ChebyshevPassResult pass = chebyshev_pass(e, options, deadline);
     out.chebyshev_moves = pass.moved;
     out.lps += pass.lps;
   }
-  out.target = nearest_doubles(e);
+  out.target = rounded();
   if (policy == SnapPolicy::none) return out;
   out.checked = true;
   Scan now = scan(e, out.target);
@@ -230,7 +302,7 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
       [&](const std::vector<VertexId>& offenders) {
         const std::size_t moved = local_exact_round(e, offenders, options, out.lps);
         out.chebyshev_moves += moved;
-        out.target = nearest_doubles(e);
+        out.target = rounded();
         return moved;
       },
       [&] { return scan(e, out.target); });

@@ -138,6 +138,7 @@ void make_doubles(Embedding& e, const MapOptions& options, Clock::time_point sta
   s.chebyshev_moves = r.doubles.chebyshev_moves;
   s.snap_exact_rounds = r.doubles.exact_rounds;
   s.snap_repaired = r.doubles.repaired;
+  s.snap_boundary_rerounded = r.doubles.boundary_rerounded;
   s.snap_rounds = r.doubles.rounds;
   s.lps += r.doubles.lps;
 }

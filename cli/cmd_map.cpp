@@ -407,6 +407,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   JsonObject dbl;
   dbl.num("chebyshev_moves", std::uint64_t(s.chebyshev_moves)).num("repaired", std::uint64_t(s.snap_repaired));
   dbl.num("exact_repair_rounds", std::uint64_t(s.snap_exact_rounds)).num("double_repair_rounds", std::uint64_t(s.snap_rounds));
+  dbl.num("boundary_rerounded", std::uint64_t(s.snap_boundary_rerounded));
   dbl.flag("stopped_at_time_limit", r->doubles.stopped_at_deadline);
   j.obj("input", in).obj("preprocess", pre).obj("expansion", ex).obj("double_output", dbl).obj("output", out).obj("bits", bits);
   j.obj("seconds", times).obj("predicates", filter).obj("verdict", verdict);

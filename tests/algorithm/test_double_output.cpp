@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "algorithm/double_output.hpp"
 #include "algorithm/expansion_cone.hpp"
@@ -181,4 +182,29 @@ TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair
   for (TetId t : e.mesh.live_tets()) CHECK(e.orient_target(e.mesh.tet(t)) == Sign::positive);
   for (VertexId v = 0; v < e.num_vertices(); ++v)
     if (e.boundary[v]) CHECK(e.target[v] == r.target[v]);
+}
+
+TEST_CASE("repair rounds a boundary vertex to another double within one ulp when the nearest flattens an all-boundary tet") {
+  // One tet, all four vertices prescribed: a flat but positive tet whose apex height 2^-60 above
+  // z = 1 is not a double. The nearest doubles put the apex at z = 1 (flat); the double on the
+  // exact value's other side, 1 + 2^-52, keeps it positive. No interior vertex can help.
+  MapProblem p;
+  p.tets = {{0, 1, 2, 3}};
+  p.source = {{Rational(0), Rational(0), Rational(0)}, {Rational(1), Rational(0), Rational(0)},
+              {Rational(0), Rational(1), Rational(0)}, {Rational(0), Rational(0), Rational(1)}};
+  p.boundary_vertices = {0, 1, 2, 3};
+  const Rational apex_z = Rational(1) + rational_from_double(std::ldexp(1.0, -60));
+  p.boundary_positions = {{Rational(0), Rational(0), Rational(1)}, {Rational(1), Rational(0), Rational(1)},
+                          {Rational(0), Rational(1), Rational(1)}, {Rational(1, 3), Rational(1, 3), apex_z}};
+  MapOptions nearest;
+  nearest.snap = SnapPolicy::nearest;
+  const MapResult plain = map_checked(p, nearest);
+  CHECK(plain.doubles.check.degenerate == 1);
+  const MapResult r = map_checked(p);  // repair, the default
+  CHECK(r.doubles.check.valid());
+  CHECK(recount(r.tets, r.doubles.target).degenerate == 0);
+  CHECK(recount(r.tets, r.doubles.target).inverted == 0);
+  CHECK(r.stats.snap_boundary_rerounded == 1);
+  CHECK(r.doubles.target[3][2] == std::nextafter(1.0, 2.0));
+  for (int v = 0; v < 3; ++v) CHECK(r.doubles.target[std::size_t(v)] == plain.doubles.target[std::size_t(v)]);
 }
