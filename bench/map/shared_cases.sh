@@ -35,9 +35,10 @@ PY
     "$cmx" map "$domain" "$opt" "$bnd" -o "$out/$name.again" --quiet "${extra[@]}" >/dev/null 2>&1
     local same; same=$(cmp -s "$out/$name.tmap" "$out/$name.again.tmap" && echo yes || echo NO)
     local per; per=$(python3 -c "print('%.2e' % ($secs / $tets))")
+    # (verify_tmap exits 1 on an invalid map: the verdict is read from its JSON, not its status)
     check=$(python3 "$tools/verify_tmap.py" "$domain" "$bnd" "$out/$name.tmap" 2>&1 |
-            python3 -c "import json,sys;print('valid' if json.loads(sys.stdin.read())['valid'] else 'INVALID')" 2>/dev/null ||
-            echo error)
+            python3 -c "import json,sys;print('valid' if json.loads(sys.stdin.read())['valid'] else 'INVALID')" 2>/dev/null)
+    [ -n "$check" ] || check=error
     # verify_tmap's float filter underflows on coordinates below about 1e-103 (bench/map/
     # exact_orientation.py says why); its INVALID then gets an exact second opinion on orientations.
     if [ "$check" != valid ]; then
