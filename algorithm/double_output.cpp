@@ -1,7 +1,6 @@
 #include "algorithm/double_output.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <deque>
 #include <limits>
 #include <unordered_map>
@@ -201,14 +200,6 @@ std::vector<std::array<double, 3>> nearest_doubles(const Embedding& e) {
   return out;
 }
 
-// The double next to nearest = to_double(x) on x's other side (nearest itself when x is a double).
-double other_double(const Rational& x, double nearest) {
-  const Rational n = rational_from_double(nearest);
-  if (n == x) return nearest;
-  return std::nextafter(nearest, n < x ? std::numeric_limits<double>::infinity()
-                                       : -std::numeric_limits<double>::infinity());
-}
-
 bool all_boundary(const Embedding& e, const topology::Tet& t) {
   return e.boundary[t[0]] && e.boundary[t[1]] && e.boundary[t[2]] && e.boundary[t[3]];
 }
@@ -237,8 +228,13 @@ std::vector<std::pair<VertexId, std::array<double, 3>>> reround_boundary(const E
     if (!all_boundary(e, tet) || positive(d, tet)) continue;
     for (VertexId v : tet) {
       const std::array<double, 3> nearest = d[v];
+      // The double on the exact value's other side: the other end of the point's cached
+      // enclosure (nearest itself when the coordinate is a double).
       std::array<double, 3> other;
-      for (int i = 0; i < 3; ++i) other[std::size_t(i)] = other_double(e.target[v].coordinate(i), nearest[std::size_t(i)]);
+      for (int i = 0; i < 3; ++i) {
+        const DoubleEnclosure& b = e.target[v].enclosure(i);
+        other[std::size_t(i)] = nearest[std::size_t(i)] == b.lo ? b.hi : b.lo;
+      }
       const std::size_t before = bad_around(v);
       bool better = false;
       for (unsigned mask = 1; mask < 8 && !better; ++mask) {

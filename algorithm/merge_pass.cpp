@@ -90,10 +90,12 @@ class Merger {
       if (c == saved ? apex == keep : c == points[gone] && apex == gone) continue;
       for (TetId t : e_.mesh.tets_of(apex)) {
         topology::Tet x = e_.mesh.tet(t);
-        if (!ok || topology::contains(x, other)) continue;
+        if (topology::contains(x, other)) continue;
         x[topology::local_index(x, apex)] = keep;
         ok = (source ? e_.orient_source(x) : e_.orient_target(x)) == Sign::positive;
+        if (!ok) break;
       }
+      if (!ok) break;
     }
     points[keep] = saved;
     return ok;
@@ -110,11 +112,8 @@ class Merger {
   std::optional<HPoint> position(bool source, VertexId keep, VertexId gone) {
     std::vector<HPoint>& points = source ? e_.source : e_.target;
     const std::vector<Approx>& approx = source ? source_approx_ : target_approx_;
-    const HPoint middle((points[keep].coordinate(0) + points[gone].coordinate(0)) / Rational(2),
-                        (points[keep].coordinate(1) + points[gone].coordinate(1)) / Rational(2),
-                        (points[keep].coordinate(2) + points[gone].coordinate(2)) / Rational(2));
     // Copies: positive_at moves points[keep] while it tests.
-    const std::array<HPoint, 3> candidates{points[keep], points[gone], middle};
+    const std::array<HPoint, 3> candidates{points[keep], points[gone], midpoint(points[keep], points[gone])};
     for (const HPoint& c : candidates)
       if (positive_at(points, source, keep, gone, c)) return c;
     const lp::FloatChebyshev f = lp::float_chebyshev(float_rows(approx, keep, gone));
