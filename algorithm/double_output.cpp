@@ -5,6 +5,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "algorithm/decrowd.hpp"
 #include "algorithm/expansion_cone.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
@@ -32,20 +33,6 @@ std::string_view to_string(SnapPolicy p) {
   }
   return "?";
 }
-
-namespace {
-
-// Moves v to the precision-reduced Chebyshev centre of its star's kernel; true when it moved.
-// The current position is inside the kernel, so the LP has interior; a failure (a degenerate
-// face, which a valid map cannot have) just leaves the vertex where it is.
-bool recentre(Embedding& e, VertexId v, const PlacementOptions& options) {
-  const Placement p = place_in_cone(gather_expansion_cone(e, v), options);
-  if (!p.ok() || p.position == e.target[v]) return false;
-  e.target[v] = p.position;
-  return true;
-}
-
-}  // namespace
 
 namespace {
 bool passed(const Deadline& deadline) { return deadline && std::chrono::steady_clock::now() > *deadline; }
@@ -259,6 +246,48 @@ std::vector<std::pair<VertexId, std::array<double, 3>>> reround_boundary(const E
   return changed;
 }
 
+// The crowds around p_c (decrowd.hpp): homotheties, then sweeps from the outermost vertex inward
+// until the doubles are valid, 300 sweeps, or 10 sweeps without fewer bad tets. The sweeps keep
+// the crowd's positions of the best sweep (a sweep can make the doubles worse, measured on the
+// polycube bird).
+template <class Rounded>
+void open_crowds(Embedding& e, Scan& now, DoubleMap& out, const PlacementOptions& options,
+                 const Deadline& deadline, Rounded rounded) {
+  const auto bad = [](const DoubleCheck& c) { return c.inverted + c.degenerate; };
+  const auto rescan = [&] {
+    out.target = rounded();
+    now = scan(e, out.target);
+  };
+  out.crowd_scalings = scale_crowds(e);
+  if (out.crowd_scalings > 0) rescan();
+  const std::vector<VertexId> crowd = crowd_around_center(e);
+  if (now.check.valid() || crowd.empty()) return;
+  const auto positions = [&] {
+    std::vector<HPoint> p;
+    for (VertexId v : crowd) p.push_back(e.target[v]);
+    return p;
+  };
+  constexpr std::size_t cap = 300, patience = 10;
+  std::vector<HPoint> best_positions = positions();
+  std::size_t best = bad(now.check), stale = 0;
+  while (out.crowd_sweeps < cap && stale < patience && !now.check.valid() && !passed(deadline)) {
+    ++out.crowd_sweeps;
+    const std::size_t moved = sweep_crowd(e, crowd, options, out.lps);
+    out.chebyshev_moves += moved;
+    rescan();
+    if (moved == 0) break;
+    if (bad(now.check) < best) {
+      best = bad(now.check), stale = 0;
+      best_positions = positions();
+    } else {
+      ++stale;
+    }
+  }
+  if (now.check.valid() || bad(now.check) == best) return;
+  for (std::size_t i = 0; i < crowd.size(); ++i) e.target[crowd[i]] = best_positions[i];
+  rescan();
+}
+
 DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& options, const Deadline& deadline) {
   DoubleMap out;
   if (policy == SnapPolicy::repair) {
@@ -290,6 +319,10 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
   Scan now = scan(e, out.target);
   out.check = now.check;
   if (policy != SnapPolicy::repair || now.check.valid()) return out;
+
+  open_crowds(e, now, out, options, deadline, rounded);
+  out.check = now.check;
+  if (now.check.valid()) return out;
 
   // First in the exact map, where every move is safe (measured on tgs_100349: a crowd of vertices
   // within 1e-19 of each other does not open in 32 rounds); then among the doubles themselves.

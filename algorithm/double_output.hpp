@@ -57,6 +57,8 @@ struct DoubleMap {
   std::size_t repaired = 0;                   // re-centrings among the doubles (a vertex may count twice)
   std::size_t rounds = 0;                     // repair rounds among the doubles
   std::size_t lps = 0;
+  std::size_t crowd_scalings = 0;             // homotheties opening crowds around p_c (decrowd.hpp)
+  std::size_t crowd_sweeps = 0;               // outside-in sweeps over the crowd around p_c
   std::size_t boundary_rerounded = 0;         // boundary vertices given a double other than the nearest
   bool stopped_at_deadline = false;           // the time limit cut the repair short (moves undone)
 };

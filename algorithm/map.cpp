@@ -137,6 +137,8 @@ void make_doubles(Embedding& e, const MapOptions& options, Clock::time_point sta
   r.doubles = make_double_map(e, snap_policy(options), options.placement, deadline_of(options, start));
   s.chebyshev_moves = r.doubles.chebyshev_moves;
   s.snap_exact_rounds = r.doubles.exact_rounds;
+  s.snap_crowd_scalings = r.doubles.crowd_scalings;
+  s.snap_crowd_sweeps = r.doubles.crowd_sweeps;
   s.snap_repaired = r.doubles.repaired;
   s.snap_boundary_rerounded = r.doubles.boundary_rerounded;
   s.snap_rounds = r.doubles.rounds;

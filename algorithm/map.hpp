@@ -105,6 +105,7 @@ struct MapStatistics {
   // Double output.
   std::size_t chebyshev_moves = 0;            // exact positions changed by the Chebyshev pass
   std::size_t snap_exact_rounds = 0, snap_repaired = 0, snap_rounds = 0;
+  std::size_t snap_crowd_scalings = 0, snap_crowd_sweeps = 0;  // decrowd.hpp
   std::size_t snap_boundary_rerounded = 0;    // boundary vertices given a double within 1 ulp, not the nearest
   std::size_t lps = 0, lps_certified = 0, lps_fell_back = 0;
   std::size_t lp_float_guesses = 0;           // cones classified simple by a float LP alone (placed when popped)

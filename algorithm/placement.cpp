@@ -220,4 +220,11 @@ Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& optio
   return out;
 }
 
+bool recentre(Embedding& e, VertexId v, const PlacementOptions& options) {
+  const Placement p = place_in_cone(gather_expansion_cone(e, v), options);
+  if (!p.ok() || p.position == e.target[v]) return false;
+  e.target[v] = p.position;
+  return true;
+}
+
 }  // namespace cmx::algorithm

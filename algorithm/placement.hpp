@@ -82,4 +82,10 @@ std::optional<Placement> place_at_point(const Embedding& e, VertexId v, const st
 Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& options,
                         const HPoint* segment_from = nullptr, const HPoint* segment_to = nullptr);
 
+// Moves expanded vertex v to the precision-reduced Chebyshev centre of its star's kernel; true
+// when it moved. Its current position is inside the kernel, so the LP has interior; a failure (a
+// degenerate face, which a valid map cannot have) leaves the vertex where it is. Every tet around
+// v stays positive.
+bool recentre(Embedding& e, VertexId v, const PlacementOptions& options);
+
 }  // namespace cmx::algorithm

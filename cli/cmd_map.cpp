@@ -407,6 +407,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   verdict.num("double_inverted", std::uint64_t(d.check.inverted)).num("double_degenerate", std::uint64_t(d.check.degenerate));
   JsonObject dbl;
   dbl.num("chebyshev_moves", std::uint64_t(s.chebyshev_moves)).num("repaired", std::uint64_t(s.snap_repaired));
+  dbl.num("crowd_scalings", std::uint64_t(s.snap_crowd_scalings)).num("crowd_sweeps", std::uint64_t(s.snap_crowd_sweeps));
   dbl.num("exact_repair_rounds", std::uint64_t(s.snap_exact_rounds)).num("double_repair_rounds", std::uint64_t(s.snap_rounds));
   dbl.num("boundary_rerounded", std::uint64_t(s.snap_boundary_rerounded));
   dbl.flag("stopped_at_time_limit", r->doubles.stopped_at_deadline);
