@@ -11,6 +11,7 @@
 //                     the exact map: each move keeps every tet around it positive, so the exact
 //                     map stays valid), then nearest;
 //   repair          : the nearest doubles when they are valid already; else chebyshev-pass, then
+//                     the crowds around p_c opened (decrowd.hpp), then
 //                     rounds of exact Gauss-Seidel moves of the interior
 //                     vertices of the tets the doubles invert or flatten and of their neighbours
 //                     (vertices crowded closer than doubles resolve move apart), then rounds in
