@@ -130,7 +130,7 @@ std::vector<VertexId> crowd_around_center(const Embedding& e) {
       extent = std::max(extent, log2_distance(e.center, e.target[v]));
   std::vector<VertexId> out;
   for (const auto& [d, v] : by_distance(e, interior_vertices(e)))
-    if (d < extent - 20) out.push_back(v);
+    if (d < extent - 10) out.push_back(v);
   std::sort(out.begin(), out.end());
   return out;
 }

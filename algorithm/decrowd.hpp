@@ -31,8 +31,8 @@ namespace cmx::algorithm {
 // representable otherwise): does nothing for another `arith`.
 std::size_t scale_crowds(Embedding& e);
 
-// The interior vertices within 2^-20 times the boundary's distance from p_c (at least one
-// interior vertex is there whenever the last expansions crowd).
+// The interior vertices within 2^-10 times the boundary's distance from p_c (the distances as
+// in scale_crowds: log2 of the largest coordinate difference).
 std::vector<VertexId> crowd_around_center(const Embedding& e);
 
 // One sweep: each vertex of `crowd`, in decreasing distance from p_c (then by id), moves to the
