@@ -285,8 +285,8 @@ void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vecto
 
 // The crowds around p_c (decrowd.hpp): passes of homotheties then sweeps from the outermost
 // vertex inward, until the doubles are valid, 8 passes, or a pass without fewer bad tets. A
-// pass's sweeps open gaps that the next pass's homotheties use (slab_50_40_1_s2_sphere: 1,445
-// bad tets, then 711, 404, 376, 114 after the first four passes, with the crowd of the first).
+// pass's sweeps open gaps that the next pass's homotheties use (slab_50_40_1_s2_sphere: 666,
+// 209, 11 and 0 bad tets after each of four passes).
 template <class Rounded>
 void open_crowds(Embedding& e, Scan& now, DoubleMap& out, const PlacementOptions& options,
                  const Deadline& deadline, Rounded rounded) {
