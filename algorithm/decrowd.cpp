@@ -128,19 +128,17 @@ std::vector<VertexId> crowd_around_center(const Embedding& e) {
   for (VertexId v = 0; v < e.num_vertices(); ++v)
     if (e.boundary[v] && !e.mesh.tets_of(v).empty())
       extent = std::max(extent, log2_distance(e.center, e.target[v]));
-  std::vector<VertexId> out;
-  for (const auto& [d, v] : by_distance(e, interior_vertices(e)))
-    if (d < extent - 10) out.push_back(v);
-  std::sort(out.begin(), out.end());
+  std::vector<VertexId> out = interior_vertices(e);  // ascending ids
+  std::erase_if(out, [&](VertexId v) { return !(log2_distance(e.center, e.target[v]) < extent - 10); });
   return out;
 }
 
 std::size_t sweep_crowd(Embedding& e, const std::vector<VertexId>& crowd, const PlacementOptions& options,
                         std::size_t& lps) {
-  auto order = by_distance(e, crowd);
-  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
-    return a.first != b.first ? a.first > b.first : a.second < b.second;
-  });
+  std::vector<std::pair<double, VertexId>> order;
+  order.reserve(crowd.size());
+  for (VertexId v : crowd) order.emplace_back(-log2_distance(e.center, e.target[v]), v);
+  std::sort(order.begin(), order.end());  // farthest first, then by id
   std::size_t moved = 0;
   for (const auto& [d, v] : order) {
     ++lps;
