@@ -159,6 +159,7 @@ void merge(Embedding& e, const MapOptions& options, Clock::time_point start, Map
     return;
   }
   s.merged = m.removed;
+  s.relocating_collapses = m.relocating;
   s.collapsed += m.removed;
 }
 

@@ -8,6 +8,7 @@
 #include "algorithm/collapse_pass.hpp"
 #include "algorithm/expansion_cone.hpp"
 #include "algorithm/map_error.hpp"
+#include "algorithm/relocating_collapse.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
 
@@ -43,6 +44,14 @@ class Merger {
       return keep;
     }
     return std::nullopt;
+  }
+
+  // The float copies of vertices moved by someone else (a relocating collapse).
+  void refresh(const std::vector<VertexId>& moved) {
+    for (VertexId v : moved) {
+      source_approx_[v] = e_.source[v].approx();
+      target_approx_[v] = e_.target[v].approx();
+    }
   }
 
  private:
@@ -131,7 +140,8 @@ class Merger {
     source_approx_[keep] = from.approx();
     target_approx_[keep] = at.approx();
     for (TetId t : e_.mesh.tets_of(keep))
-      if (e_.orient_target(e_.mesh.tet(t)) != Sign::positive || e_.orient_source(e_.mesh.tet(t)) != Sign::positive)
+      if (e_.orient_target(e_.mesh.tet(t)) != Sign::positive ||
+          e_.orient_source(e_.mesh.tet(t)) != Sign::positive)
         throw MapError(MapErrorKind::internal,
                        "a merge left a tet around vertex " + std::to_string(keep) + " that is not positive");
   }
@@ -162,11 +172,22 @@ MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const
     if (e.mesh.tets_of(v).empty()) continue;
     std::optional<VertexId> keep = try_collapse(e, v);
     if (!keep) keep = merger.try_merge(v);
+    std::vector<VertexId> moved;
+    if (!keep)
+      if (std::optional<RelocatingCollapse> r = try_relocating_collapse(e, v, input_vertices, options)) {
+        keep = r->keep;
+        moved = std::move(r->movers);
+        merger.refresh(moved);
+        ++out.relocating;
+      }
     if (!keep) continue;
     ++removed;
-    for (VertexId w : topology::vertex_neighbors(e.mesh, *keep))
-      if (w >= input_vertices) work.insert(w);
-    if (*keep >= input_vertices) work.insert(*keep);
+    moved.push_back(*keep);
+    for (VertexId m : moved) {
+      for (VertexId w : topology::vertex_neighbors(e.mesh, m))
+        if (w >= input_vertices) work.insert(w);
+      if (m >= input_vertices) work.insert(m);
+    }
   }
   return out;
 }

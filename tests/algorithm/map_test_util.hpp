@@ -9,6 +9,7 @@
 
 #include "algorithm/boundary_shapes.hpp"
 #include "algorithm/domain_generators.hpp"
+#include "algorithm/embedding.hpp"
 #include "algorithm/map.hpp"
 #include "arith/rational.hpp"
 #include "arith/rounding.hpp"
@@ -68,6 +69,19 @@ inline algorithm::MapResult map_checked(const algorithm::MapProblem& p, algorith
   CHECK(r.verification.source_positive);
   CHECK(r.verification.boundary_refines);
   return r;
+}
+
+// A finished map as an embedding again (no cluster vertex; boundary = the mesh's boundary), for
+// tests that run one step of the method on it.
+inline algorithm::Embedding embedding_of(const algorithm::MapResult& r) {
+  algorithm::Embedding e;
+  e.mesh = topology::TetMesh(r.target.size(), r.tets);
+  e.source = r.source;
+  e.target = r.target;
+  e.center = r.center;
+  e.unexpanded.assign(r.target.size(), 0);
+  e.boundary = topology::boundary_vertex_flags(e.mesh);
+  return e;
 }
 
 }  // namespace cmx::test

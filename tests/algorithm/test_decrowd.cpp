@@ -18,21 +18,11 @@
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using cmx::test::embedding_of;
 using cmx::test::map_checked;
 using cmx::test::problem_from;
 
 namespace {
-
-Embedding embedding_of(const MapResult& r) {
-  Embedding e;
-  e.mesh = topology::TetMesh(r.target.size(), r.tets);
-  e.source = r.source;
-  e.target = r.target;
-  e.center = r.center;
-  e.unexpanded.assign(r.target.size(), 0);
-  e.boundary = topology::boundary_vertex_flags(e.mesh);
-  return e;
-}
 
 bool all_positive(const Embedding& e) {
   for (TetId t : e.mesh.live_tets())
