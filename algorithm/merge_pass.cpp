@@ -18,9 +18,6 @@ namespace {
 
 using Approx = std::array<double, 3>;
 
-// Below this float Chebyshev radius (relative to the rows' scale) no exact LP is tried.
-constexpr double min_float_radius = 1e-11;
-
 class Merger {
  public:
   Merger(Embedding& e, std::size_t input_vertices, const PlacementOptions& options)
@@ -126,7 +123,7 @@ class Merger {
     for (const HPoint& c : candidates)
       if (positive_at(points, source, keep, gone, c)) return c;
     const lp::FloatChebyshev f = lp::float_chebyshev(float_rows(approx, keep, gone));
-    if (!f.optimal || !(f.radius > min_float_radius * f.scale)) return std::nullopt;
+    if (!f.optimal || !(f.radius > merge_min_float_radius * f.scale)) return std::nullopt;
     const ExpansionCone cone = exact_cone(points, keep, gone);
     if (cone.degenerate) return std::nullopt;
     const Placement p = place_in_cone(cone, options_);

@@ -26,10 +26,14 @@
 
 namespace cmx::algorithm {
 
+// Below this float Chebyshev radius (relative to the rows' scale) a merge or a relocating
+// collapse tries no exact LP: the float screen only ever skips a move, which is always safe.
+inline constexpr double merge_min_float_radius = 1e-11;
+
 struct MergeResult {
-  std::size_t removed = 0;   // vertices left without tets (compact_vertices removes them)
+  std::size_t removed = 0;     // vertices left without tets (compact_vertices removes them)
   std::size_t relocating = 0;  // of those, by relocating collapses (relocating_collapse.hpp)
-  bool stopped = false;      // the deadline passed first: `e` is partly merged (the caller undoes)
+  bool stopped = false;        // the deadline passed first: `e` is partly merged (the caller undoes)
 };
 
 // Merges, relocating collapses (relocating_collapse.hpp) and the plain collapses they make

@@ -7,6 +7,7 @@
 
 #include "algorithm/expansion_cone.hpp"
 #include "algorithm/map_error.hpp"
+#include "algorithm/merge_pass.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
 
@@ -14,9 +15,6 @@ namespace cmx::algorithm {
 
 namespace {
 
-// Below this float Chebyshev radius (relative to the rows' scale) no exact LP is tried (as in the
-// merges).
-constexpr double min_float_radius = 1e-11;
 constexpr std::size_t max_movers = 3;
 
 // gone's tets without keep, gone replaced by keep: the tets the collapse rewrites.
@@ -73,7 +71,7 @@ bool place_mover(Embedding& e, VertexId u, const std::vector<topology::Tet>& sta
     cone.halfspaces.push_back(std::move(h));
   }
   const lp::FloatChebyshev guess = lp::float_chebyshev(rows);
-  if (!guess.optimal || !(guess.radius > min_float_radius * guess.scale)) return false;
+  if (!guess.optimal || !(guess.radius > merge_min_float_radius * guess.scale)) return false;
   const Placement p = place_in_cone(cone, options);
   if (!p.ok() || !strictly_inside(cone, p.position)) return false;
   (source ? e.source : e.target)[u] = p.position;
