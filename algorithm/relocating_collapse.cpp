@@ -60,18 +60,22 @@ bool place_mover(Embedding& e, VertexId u, const std::vector<topology::Tet>& sta
                  const PlacementOptions& options) {
   if (all_positive(e, star, source)) return true;
   const std::vector<HPoint>& points = source ? e.source : e.target;
+  std::vector<topology::Triangle> faces;
+  for (const topology::Tet& x : star) faces.push_back(topology::tet_face(x, topology::local_index(x, u)));
+  // The float screen first: exact half-spaces on long coordinates are only built for a kernel
+  // that the float LP finds open.
+  std::vector<std::array<double, 4>> rows;
+  for (const topology::Triangle& f : faces)
+    rows.push_back(float_inner_row(points[f[0]], points[f[1]], points[f[2]]));
+  const lp::FloatChebyshev guess = lp::float_chebyshev(rows);
+  if (!guess.optimal || !(guess.radius > merge_min_float_radius * guess.scale)) return false;
   ExpansionCone cone;
   cone.apex = u;
-  std::vector<std::array<double, 4>> rows;
-  for (const topology::Tet& x : star) {
-    const topology::Triangle f = topology::tet_face(x, topology::local_index(x, u));
-    rows.push_back(float_inner_row(points[f[0]], points[f[1]], points[f[2]]));
+  for (const topology::Triangle& f : faces) {
     InnerHalfSpace h = inner_halfspace(points[f[0]], points[f[1]], points[f[2]]);
     if (h.is_degenerate()) return false;
     cone.halfspaces.push_back(std::move(h));
   }
-  const lp::FloatChebyshev guess = lp::float_chebyshev(rows);
-  if (!guess.optimal || !(guess.radius > merge_min_float_radius * guess.scale)) return false;
   const Placement p = place_in_cone(cone, options);
   if (!p.ok() || !strictly_inside(cone, p.position)) return false;
   (source ? e.source : e.target)[u] = p.position;
