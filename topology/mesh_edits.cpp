@@ -1,6 +1,7 @@
 #include "topology/mesh_edits.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "topology/complex_queries.hpp"
 
@@ -62,8 +63,8 @@ SplitResult split_edge(TetMesh& m, VertexId a, VertexId b) {
   r.new_vertex = mid;
   for (TetId t : around) {
     Tet first = m.tet(t), second = m.tet(t);
-    first[local_index(first, b)] = mid;   // (.., a, .., m, ..)
-    second[local_index(second, a)] = mid; // (.., m, .., b, ..)
+    first[local_index(first, b)] = mid;    // (.., a, .., m, ..)
+    second[local_index(second, a)] = mid;  // (.., m, .., b, ..)
     m.set_tet(t, first);
     r.modified.push_back(t);
     r.created.push_back(m.add_tet(second));
@@ -80,7 +81,8 @@ SplitResult split_face(TetMesh& m, VertexId a, VertexId b, VertexId c) {
   }
   const std::vector<TetId> around = tets_around_face(m, a, b, c);
   if (around.empty()) {
-    r.message = "face (" + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + ") is in no tet";
+    r.message =
+        "face (" + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + ") is in no tet";
     return r;
   }
   const VertexId mid = m.add_vertex();
@@ -150,6 +152,124 @@ CollapseResult collapse_edge(TetMesh& m, VertexId keep, VertexId gone) {
   }
   r.ok = true;
   return r;
+}
+
+}  // namespace cmx::topology
+
+namespace cmx::topology {
+namespace {
+
+// The even permutation of t that puts x and y last, as (p, q, x, y). Precondition: x, y in t.
+Tet with_last(const Tet& t, VertexId x, VertexId y) {
+  Tet rest{};
+  int n = 0;
+  for (VertexId v : t)
+    if (v != x && v != y) rest[n++] = v;
+  const Tet candidate{rest[0], rest[1], x, y};
+  // Even iff the permutation t -> candidate has an even number of inversions.
+  std::array<int, 4> pos{};
+  for (int i = 0; i < 4; ++i) pos[i] = local_index(t, candidate[i]);
+  int inversions = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) inversions += pos[i] > pos[j] ? 1 : 0;
+  return inversions % 2 == 0 ? candidate : Tet{rest[1], rest[0], x, y};
+}
+
+bool is_edge(const TetMesh& m, VertexId a, VertexId b) {
+  for (TetId t : m.tets_of(a))
+    if (contains(m.tet(t), b)) return true;
+  return false;
+}
+
+}  // namespace
+
+FlipPlan plan_flip_23(const TetMesh& m, VertexId a, VertexId b, VertexId c) {
+  FlipPlan r;
+  r.old = tets_around_face(m, a, b, c);
+  if (r.old.size() != 2) {
+    r.message = "face is not shared by two tets";
+    return r;
+  }
+  const Tet& first = m.tet(r.old[0]);
+  VertexId d = invalid_index, e = invalid_index;
+  for (VertexId v : first)
+    if (v != a && v != b && v != c) d = v;
+  for (VertexId v : m.tet(r.old[1]))
+    if (v != a && v != b && v != c) e = v;
+  if (is_edge(m, d, e)) {
+    r.message = "the new edge is already an edge";
+    return r;
+  }
+  // with_last gives (p', q', a, d) even; moving d to the front is odd, so (d, q', p', a) is even:
+  // seen from d the ring runs p = q', q = p', r = a.
+  const Tet x = with_last(first, a, d);
+  const VertexId p = x[1], q = x[0], r0 = a;
+  r.fresh = {Tet{p, q, d, e}, Tet{q, r0, d, e}, Tet{r0, p, d, e}};
+  r.ok = true;
+  return r;
+}
+
+FlipPlan plan_flip_32(const TetMesh& m, VertexId d, VertexId e) {
+  FlipPlan r;
+  r.old = tets_around_edge(m, d, e);
+  if (r.old.size() != 3) {
+    r.message = "edge is not in three tets";
+    return r;
+  }
+  const Tet pqde = with_last(m.tet(r.old[0]), d, e);
+  const VertexId p = pqde[0], q = pqde[1];
+  VertexId third = invalid_index;
+  for (TetId t : r.old)
+    for (VertexId v : m.tet(t))
+      if (v != d && v != e && v != p && v != q) third = v;
+  if (third == invalid_index) {
+    r.message = "the ring is not three vertices";
+    return r;
+  }
+  if (!tets_around_face(m, p, q, third).empty()) {
+    r.message = "the ring's face is already a face";
+    return r;
+  }
+  r.fresh = {Tet{d, p, q, third}, Tet{e, q, p, third}};
+  r.ok = true;
+  return r;
+}
+
+FlipResult apply_flip(TetMesh& m, const FlipPlan& plan) {
+  FlipResult r;
+  if (!plan.ok) {
+    r.message = plan.message;
+    return r;
+  }
+  for (TetId t : plan.old) {
+    r.removed.push_back(m.tet(t));
+    m.remove_tet(t);
+  }
+  for (const Tet& t : plan.fresh) r.created.push_back(m.add_tet(t));
+  r.ok = true;
+  return r;
+}
+
+FlipResult flip_23(TetMesh& m, VertexId a, VertexId b, VertexId c) {
+  return apply_flip(m, plan_flip_23(m, a, b, c));
+}
+
+FlipResult flip_32(TetMesh& m, VertexId d, VertexId e) {
+  return apply_flip(m, plan_flip_32(m, d, e));
+}
+
+void undo_flip(TetMesh& m, const FlipResult& flip) {
+  // By content, not by handle: undoing a later flip that took one of these tets out put it back
+  // under a new handle.
+  for (TetId t : flip.created) {
+    const Tet x = m.tet(t);
+    for (TetId u : m.tets_of(x[0]))
+      if (m.tet(u) == x) {
+        m.remove_tet(u);
+        break;
+      }
+  }
+  for (const Tet& t : flip.removed) m.add_tet(t);
 }
 
 }  // namespace cmx::topology

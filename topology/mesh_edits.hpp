@@ -44,4 +44,38 @@ struct CollapseResult {
 // condition fails. `gone` keeps its id and is left with no tet.
 CollapseResult collapse_edge(TetMesh& m, VertexId keep, VertexId gone);
 
+// A flip planned but not made: the tets it takes out and the ones it puts in (so that a caller
+// can test the new tets' geometry before anything changes).
+struct FlipPlan {
+  bool ok = false;
+  std::vector<TetId> old;
+  std::vector<Tet> fresh;
+  std::string message;  // why it is refused
+};
+
+struct FlipResult {
+  bool ok = false;
+  std::vector<Tet> removed;    // the vertices of the tets taken out (tombstoned)
+  std::vector<TetId> created;  // new handles
+  std::string message;
+};
+
+// 2-3 flip: the two tets sharing face abc, with apexes d and e, become three tets around the new
+// edge de. Refused when abc is not in exactly two tets or de is already an edge. The new tets'
+// orientation follows the old ones': with (d,p,q,r) an even permutation of d's tet, they are
+// (p,q,d,e), (q,r,d,e), (r,p,d,e) (the positive orientation wherever the old pair is convex).
+[[nodiscard]] FlipPlan plan_flip_23(const TetMesh& m, VertexId a, VertexId b, VertexId c);
+// 3-2 flip: the three tets around edge de become two sharing the face pqr of the ring: (d,p,q,r)
+// and (e,q,p,r), with (p,q,d,e) an even permutation of one of the three. Refused when de is not
+// in exactly three tets, its ring is not three vertices, or pqr is already a face.
+[[nodiscard]] FlipPlan plan_flip_32(const TetMesh& m, VertexId d, VertexId e);
+// Makes a plan of this mesh, unchanged since it was planned (a refused plan changes nothing).
+FlipResult apply_flip(TetMesh& m, const FlipPlan& plan);
+FlipResult flip_23(TetMesh& m, VertexId a, VertexId b, VertexId c);
+FlipResult flip_32(TetMesh& m, VertexId d, VertexId e);
+// Undoes a flip: removes the tets it created, puts `removed` back (under new handles). Flips made
+// after it must be undone first (in reverse order); their undoing may have moved its tets to new
+// handles, which is why the created tets are found by their vertices.
+void undo_flip(TetMesh& m, const FlipResult& flip);
+
 }  // namespace cmx::topology

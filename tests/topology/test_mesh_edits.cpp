@@ -5,6 +5,7 @@
 #include <iterator>
 #include <random>
 
+#include "topo_test_util.hpp"
 #include "topology/ball_check.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/consistency.hpp"
@@ -55,7 +56,7 @@ TEST_CASE("face split 1->3: interior face (two tets) and boundary face (one tet)
   CHECK(check_incidences(m).ok);
   CHECK(check_ball(m).ok);
   CHECK(boundary_vertex_flags(m)[r.new_vertex] == 0);  // interior now
-  const SplitResult s = split_face(m, 0, 1, 2);  // boundary face
+  const SplitResult s = split_face(m, 0, 1, 2);        // boundary face
   REQUIRE(s.ok);
   CHECK(s.created.size() == 2);
   CHECK(m.num_tets() == 8);
@@ -97,7 +98,8 @@ TEST_CASE("edge collapse: link condition refuses pinches, accepted collapses kee
   // link condition holds, the boundary rule refuses (the collapse would pinch the boundary).
   {
     const GridComplex cube = grid_complex(1, 1, 1);
-    const SimplexSet la = vertex_link(cube.mesh, 0), lb = vertex_link(cube.mesh, 7), lab = edge_link(cube.mesh, 0, 7);
+    const SimplexSet la = vertex_link(cube.mesh, 0), lb = vertex_link(cube.mesh, 7),
+                     lab = edge_link(cube.mesh, 0, 7);
     std::vector<VertexId> common;
     std::set_intersection(la.vertices.begin(), la.vertices.end(), lb.vertices.begin(), lb.vertices.end(),
                           std::back_inserter(common));
@@ -144,4 +146,91 @@ TEST_CASE("edge collapse: link condition refuses pinches, accepted collapses kee
     }
   CHECK(accepted > 0);
   CHECK(refused > 0);
+}
+
+namespace {
+
+using P = std::array<std::int32_t, 3>;
+
+// Every live tet positive with the given integer positions.
+bool all_positive(const TetMesh& m, const std::vector<P>& at) {
+  for (TetId t : m.live_tets()) {
+    const Tet& x = m.tet(t);
+    if (cmx::topology::test::orientation(at[x[0]], at[x[1]], at[x[2]], at[x[3]]) <= 0) return false;
+  }
+  return true;
+}
+
+// The even permutation number k (0..11) of t.
+Tet even_permutation(const Tet& t, int k) {
+  static constexpr int perms[12][4] = {{0, 1, 2, 3}, {1, 2, 0, 3}, {2, 0, 1, 3}, {0, 2, 3, 1},
+                                       {0, 3, 1, 2}, {1, 0, 3, 2}, {2, 3, 0, 1}, {3, 0, 2, 1},
+                                       {1, 3, 2, 0}, {2, 1, 3, 0}, {3, 2, 1, 0}, {3, 1, 0, 2}};
+  return {t[perms[k][0]], t[perms[k][1]], t[perms[k][2]], t[perms[k][3]]};
+}
+
+}  // namespace
+
+TEST_CASE("2-3 and 3-2 flips keep every tet positive whatever the stored vertex order") {
+  // p, q, r: a triangle; d below it, e above it, both over its inside (a convex pair).
+  const std::vector<P> at{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -3}, {1, 1, 3}};
+  const VertexId p = 0, q = 1, r = 2, d = 3, e = 4;
+  for (int k = 0; k < 12; ++k) {
+    CAPTURE(k);
+    // (d, p, q, r) and (e, q, p, r) are positive; store them in the k-th even order.
+    TetMesh m(
+        5, std::vector<Tet>{even_permutation({d, p, q, r}, k), even_permutation({e, q, p, r}, (k + 5) % 12)});
+    REQUIRE(all_positive(m, at));
+    const FlipResult f = flip_23(m, r, p, q);
+    REQUIRE(f.ok);
+    CHECK(f.removed.size() == 2);
+    CHECK(m.num_tets() == 3);
+    CHECK(tets_around_edge(m, d, e).size() == 3);
+    CHECK(all_positive(m, at));
+    CHECK(check_incidences(m).ok);
+    CHECK(check_ball(m).ok);
+    CHECK_FALSE(flip_23(m, p, q, d).ok);  // a boundary face: one tet only
+    const FlipResult back = flip_32(m, e, d);
+    REQUIRE(back.ok);
+    CHECK(m.num_tets() == 2);
+    CHECK(tets_around_face(m, p, q, r).size() == 2);
+    CHECK(all_positive(m, at));
+    CHECK(check_ball(m).ok);
+    undo_flip(m, back);
+    CHECK(m.num_tets() == 3);
+    CHECK(tets_around_edge(m, d, e).size() == 3);
+    CHECK(all_positive(m, at));
+  }
+}
+
+TEST_CASE("flips are refused where they would duplicate an edge or a face") {
+  GridComplex g = grid_complex(2, 2, 2);
+  TetMesh& m = g.mesh;
+  const TetMesh before = m;
+  // An edge in more than three tets, and an interior face whose apexes are already joined is
+  // looked for among the grid's faces: every refusal leaves the mesh as it was.
+  const VertexId center = 1 + 3 * (1 + 3 * 1);
+  for (VertexId v : vertex_neighbors(m, center)) {
+    if (tets_around_edge(m, center, v).size() == 3) continue;
+    CHECK_FALSE(flip_32(m, center, v).ok);
+  }
+  CHECK(m.num_tets() == before.num_tets());
+  CHECK(check_incidences(m).ok);
+  std::size_t refused = 0, made = 0;
+  for (TetId t : m.live_tets()) {
+    const Tet x = m.tet(t);
+    const FlipResult f = flip_23(m, x[0], x[1], x[2]);
+    if (!f.ok) {
+      ++refused;
+      continue;
+    }
+    ++made;
+    CHECK(check_incidences(m).ok);
+    CHECK(check_ball(m).ok);
+    undo_flip(m, f);
+  }
+  CHECK(refused > 0);
+  CHECK(made > 0);
+  CHECK(m.num_tets() == before.num_tets());
+  CHECK(check_ball(m).ok);
 }
