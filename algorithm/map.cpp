@@ -160,6 +160,7 @@ void merge(Embedding& e, const MapOptions& options, Clock::time_point start, Map
   }
   s.merged = m.removed;
   s.relocating_collapses = m.relocating;
+  s.flip_collapses = m.flipping;
   s.collapsed += m.removed;
 }
 

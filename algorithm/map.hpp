@@ -101,6 +101,7 @@ struct MapStatistics {
   std::size_t collapsed = 0;                  // added vertices collapsed away at the end (merges included)
   std::size_t merged = 0;                     // of those, removed by merges and the collapses they enabled (merge_pass.hpp)
   std::size_t relocating_collapses = 0;       // of those, collapses that moved other added vertices (relocating_collapse.hpp)
+  std::size_t flip_collapses = 0;             // of those, collapses made possible by flips (flip_collapse.hpp)
   bool merge_stopped_at_time_limit = false;   // the time limit cut the merges short (all undone)
   std::size_t refinement_collapses = 0;       // added vertices collapsed right after their refinement
   // Double output.

@@ -7,6 +7,7 @@
 
 #include "algorithm/collapse_pass.hpp"
 #include "algorithm/expansion_cone.hpp"
+#include "algorithm/flip_collapse.hpp"
 #include "algorithm/map_error.hpp"
 #include "algorithm/relocating_collapse.hpp"
 #include "topology/complex_queries.hpp"
@@ -176,6 +177,20 @@ MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const
         moved = std::move(r->movers);
         merger.refresh(moved);
         ++out.relocating;
+      }
+    const Remover moving_removal = [&]() -> std::optional<Removal> {
+      if (std::optional<VertexId> k = merger.try_merge(v)) return Removal{*k, {}};
+      if (std::optional<RelocatingCollapse> r = try_relocating_collapse(e, v, input_vertices, options)) {
+        merger.refresh(r->movers);
+        return Removal{r->keep, r->movers};
+      }
+      return std::nullopt;
+    };
+    if (!keep)
+      if (std::optional<FlipCollapse> f = try_flip_collapse(e, v, moving_removal)) {
+        keep = f->keep;
+        moved = std::move(f->touched);  // their stars changed, nothing moved
+        ++out.flipping;
       }
     if (!keep) continue;
     ++removed;

@@ -33,11 +33,12 @@ inline constexpr double merge_min_float_radius = 1e-11;
 struct MergeResult {
   std::size_t removed = 0;     // vertices left without tets (compact_vertices removes them)
   std::size_t relocating = 0;  // of those, by relocating collapses (relocating_collapse.hpp)
+  std::size_t flipping = 0;    // of those, by flip collapses (flip_collapse.hpp)
   bool stopped = false;        // the deadline passed first: `e` is partly merged (the caller undoes)
 };
 
-// Merges, relocating collapses (relocating_collapse.hpp) and the plain collapses they make
-// possible, over the added vertices (ids >= input_vertices), highest id first, a vertex coming
+// Merges, relocating collapses (relocating_collapse.hpp), flip collapses (flip_collapse.hpp) and
+// the plain collapses they make possible, over the added vertices (ids >= input_vertices), highest id first, a vertex coming
 // back only when a star it is in changed (or a vertex of it moved).
 // Precondition: no cluster vertex left. Stops when `deadline` (if any) has passed.
 MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,

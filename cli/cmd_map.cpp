@@ -58,7 +58,8 @@ constexpr const char* usage =
     "                    default an added vertex is also merged into an interior neighbour that\n"
     "                    moves into its new star's kernel: in source and target if it was added\n"
     "                    too, in the target only if it is an input vertex; or collapsed into a\n"
-    "                    neighbour that stays while up to three other added vertices move)\n"
+    "                    neighbour that stays while up to three other added vertices move, or\n"
+    "                    after flips of its star that keep every tet positive)\n"
     "  --no-collapse-refinement  do not collapse, right after each star-shapification, the\n"
     "                    vertices it added (by default they are collapsed wherever every invariant\n"
     "                    survives: paper Sec. 4.2.2)\n"
@@ -379,6 +380,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   ex.num("collapsed", std::uint64_t(s.collapsed));
   ex.num("merged", std::uint64_t(s.merged));
   ex.num("relocating_collapses", std::uint64_t(s.relocating_collapses));
+  ex.num("flip_collapses", std::uint64_t(s.flip_collapses));
   ex.flag("merge_stopped_at_time_limit", s.merge_stopped_at_time_limit);
   ex.num("refinement_collapses", std::uint64_t(s.refinement_collapses));
   ex.num("lps", std::uint64_t(s.lps)).num("lps_certified", std::uint64_t(s.lps_certified));

@@ -17,7 +17,8 @@
 
 namespace cmx::test {
 
-inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh, const std::vector<algorithm::Point3>& source,
+inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh,
+                                          const std::vector<algorithm::Point3>& source,
                                           const std::vector<std::array<double, 3>>& source_doubles,
                                           const std::string& shape) {
   const auto spec = algorithm::parse_boundary_shape(shape);
@@ -29,7 +30,8 @@ inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh, const s
   p.source = source;
   p.boundary_vertices = b.vertices;
   for (const auto& q : b.positions)
-    p.boundary_positions.push_back({rational_from_double(q[0]), rational_from_double(q[1]), rational_from_double(q[2])});
+    p.boundary_positions.push_back(
+        {rational_from_double(q[0]), rational_from_double(q[1]), rational_from_double(q[2])});
   return p;
 }
 
@@ -37,10 +39,12 @@ inline algorithm::MapProblem problem_from(const algorithm::GeneratedDomain& d, c
   return problem_from(d.mesh, d.positions, d.double_positions(), shape);
 }
 
-inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh, const std::vector<std::array<double, 3>>& pos,
+inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh,
+                                          const std::vector<std::array<double, 3>>& pos,
                                           const std::string& shape) {
   std::vector<algorithm::Point3> exact;
-  for (const auto& q : pos) exact.push_back({rational_from_double(q[0]), rational_from_double(q[1]), rational_from_double(q[2])});
+  for (const auto& q : pos)
+    exact.push_back({rational_from_double(q[0]), rational_from_double(q[1]), rational_from_double(q[2])});
   return problem_from(mesh, exact, pos, shape);
 }
 
@@ -83,5 +87,16 @@ inline algorithm::Embedding embedding_of(const algorithm::MapResult& r) {
   e.boundary = topology::boundary_vertex_flags(e.mesh);
   return e;
 }
+
+// Every live tet strictly positive in the source and in the target.
+inline bool every_tet_positive(const algorithm::Embedding& e) {
+  for (topology::TetId t : e.mesh.live_tets())
+    if (e.orient_source(e.mesh.tet(t)) != Sign::positive || e.orient_target(e.mesh.tet(t)) != Sign::positive)
+      return false;
+  return true;
+}
+
+// The four boundary shapes the collapse tests run on.
+inline constexpr const char* collapse_test_shapes[] = {"tet", "stiff-tet", "sphere", "star:3"};
 
 }  // namespace cmx::test

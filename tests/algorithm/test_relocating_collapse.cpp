@@ -19,15 +19,6 @@ using namespace cmx::test;
 
 namespace {
 
-const char* const shapes[] = {"tet", "stiff-tet", "sphere", "star:3"};
-
-bool every_tet_positive(const Embedding& e) {
-  for (TetId t : e.mesh.live_tets())
-    if (e.orient_source(e.mesh.tet(t)) != Sign::positive || e.orient_target(e.mesh.tet(t)) != Sign::positive)
-      return false;
-  return true;
-}
-
 std::vector<topology::Tet> live_tets(const Embedding& e) {
   std::vector<topology::Tet> out;
   for (TetId t : e.mesh.live_tets()) out.push_back(e.mesh.tet(t));
@@ -38,7 +29,7 @@ std::vector<topology::Tet> live_tets(const Embedding& e) {
 
 TEST_CASE("a relocating collapse removes an added vertex by moving others and keeps every tet positive") {
   std::size_t made = 0, refused = 0;
-  for (const std::string shape : shapes) {
+  for (const std::string shape : collapse_test_shapes) {
     CAPTURE(shape);
     // Without merges the plain collapses leave added vertices that only moving others can remove.
     MapOptions o;
@@ -81,17 +72,20 @@ TEST_CASE("a relocating collapse removes an added vertex by moving others and ke
   CHECK(refused > 0);
 }
 
-TEST_CASE("the merge pass makes relocating collapses on a slab without interior vertices") {
-  std::size_t relocating = 0;
-  for (const std::string shape : shapes) {
-    CAPTURE(shape);
-    const MapResult r = map_checked(problem_from(thin_slab(8, 6, 2, 1), shape));
-    CHECK(r.stats.relocating_collapses <= r.stats.merged);
-    relocating += r.stats.relocating_collapses;
-    // Deterministic: the same map again.
-    const MapResult again = map_to_domain(problem_from(thin_slab(8, 6, 2, 1), shape));
-    CHECK(again.target == r.target);
-    CHECK(again.tets == r.tets);
-  }
+TEST_CASE("the merge pass makes relocating and flip collapses on slabs without interior vertices") {
+  std::size_t relocating = 0, flipping = 0;
+  for (const std::string shape : collapse_test_shapes)
+    for (const GeneratedDomain& slab : {thin_slab(8, 6, 2, 1), thin_slab(12, 9, 2, 1)}) {
+      CAPTURE(shape);
+      const MapResult r = map_checked(problem_from(slab, shape));
+      CHECK(r.stats.relocating_collapses + r.stats.flip_collapses <= r.stats.merged);
+      relocating += r.stats.relocating_collapses;
+      flipping += r.stats.flip_collapses;
+      // Deterministic: the same map again.
+      const MapResult again = map_to_domain(problem_from(slab, shape));
+      CHECK(again.target == r.target);
+      CHECK(again.tets == r.tets);
+    }
   CHECK(relocating > 0);
+  CHECK(flipping > 0);
 }
