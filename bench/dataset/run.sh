@@ -5,7 +5,7 @@
 # case in RESULTS_DIR/reports/ (the exact maps are written to RESULTS_DIR/maps/ and checked by the
 # program itself; delete them if space matters).
 # Usage: bench/dataset/run.sh DATASET_DIR RESULTS_DIR [CMX_BINARY] [-- extra parallel options]
-#   CMX_TIME_LIMIT  per-case limit in seconds (default 120); parallel kills at limit + 30
+#   CMX_TIME_LIMIT  per-case limit in seconds (default 300); parallel kills at limit + 30
 #   CMX_JOBS        parallel jobs (default: one per core)
 #   CMX_MAP_OPTIONS extra `cmx map` options, e.g. "--smooth 10" or "--snap nearest"
 # Many machines: pass parallel's own options after --, e.g. `-- --sshloginfile hosts.txt`
@@ -21,7 +21,7 @@ cmx=$here/build/release/cli/cmx
 if [ $# -gt 0 ] && [ "$1" != "--" ]; then cmx=$(realpath "$1"); shift; fi
 [ $# -gt 0 ] && [ "$1" = "--" ] && shift
 command -v parallel >/dev/null || { echo "run.sh: GNU parallel is missing (apt-get install parallel)" >&2; exit 2; }
-limit=${CMX_TIME_LIMIT:-120}
+limit=${CMX_TIME_LIMIT:-300}
 mkdir -p "$results/reports" "$results/maps" "$results/logs"
 results=$(cd "$results" && pwd)
 # One job: the case's name, mesh, boundary (columns of cases.txt). The report exists for every
