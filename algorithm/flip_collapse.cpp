@@ -170,6 +170,7 @@ class FlipSearch {
         for (VertexId v : e_.mesh.tet(t)) out.touched.push_back(v);
     std::sort(out.touched.begin(), out.touched.end());
     out.touched.erase(std::unique(out.touched.begin(), out.touched.end()), out.touched.end());
+    out.touched.erase(std::remove(out.touched.begin(), out.touched.end(), gone_), out.touched.end());  // no star left
     for (TetId t : e_.mesh.tets_of(keep))
       if (e_.orient_source(e_.mesh.tet(t)) != Sign::positive ||
           e_.orient_target(e_.mesh.tet(t)) != Sign::positive)

@@ -38,7 +38,7 @@ inline constexpr std::size_t flip_collapse_max_failures = 8;
 struct FlipCollapse {
   VertexId keep = 0;
   std::size_t flips = 0;
-  std::vector<VertexId> touched;  // the vertices moved and those of every tet the flips made (sorted, unique)
+  std::vector<VertexId> touched;  // the vertices moved and those of the tets the flips made, but gone (sorted)
 };
 
 // Precondition: no cluster vertex left; `gone` interior. Throws MapError(internal) when a flip it

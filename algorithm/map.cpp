@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <string>
+#include <vector>
 
 #include "algorithm/cluster_expansion.hpp"
 #include "algorithm/collapse_pass.hpp"
@@ -152,7 +155,14 @@ void merge(Embedding& e, const MapOptions& options, Clock::time_point start, Map
   const Deadline deadline = deadline_of(options, start);
   std::optional<Embedding> before;
   if (deadline) before = e;
-  const MergeResult m = merge_added_vertices(e, s.input_vertices, options.placement, deadline);
+  // --check: the tets a merge, relocating or flip collapse changed all lie around these vertices.
+  const auto check_around = [&e](const std::vector<VertexId>& changed) {
+    for (VertexId v : changed)
+      if (std::string why = check_local_invariant(e, v); !why.empty())
+        throw MapError(MapErrorKind::internal, "the merge pass broke an invariant: " + why);
+  };
+  const MergeResult m = merge_added_vertices(e, s.input_vertices, options.placement, deadline,
+                                             options.check ? check_around : std::function<void(const std::vector<VertexId>&)>{});
   if (m.stopped) {
     e = std::move(*before);
     s.merge_stopped_at_time_limit = true;
@@ -182,6 +192,9 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
     s.collapsed = collapse_added_vertices(e, s.input_vertices);
     if (options.merge && options.placement.arith.exact()) merge(e, options, start, s);
     s.seconds_collapse = seconds_since(phase);
+    if (options.check)
+      if (std::string why = check_invariants(e, prescribed); !why.empty())
+        throw MapError(MapErrorKind::internal, "the final collapse pass broke an invariant: " + why);
   }
   compact_vertices(e, s.input_vertices);  // vertices collapsed away, or inflation splits undone
   if (out.outcome == MapOutcome::success) {

@@ -153,7 +153,8 @@ class Merger {
 }  // namespace
 
 MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,
-                                 const std::optional<std::chrono::steady_clock::time_point>& deadline) {
+                                 const std::optional<std::chrono::steady_clock::time_point>& deadline,
+                                 const std::function<void(const std::vector<VertexId>&)>& after_step) {
   Merger merger(e, input_vertices, options);
   std::set<VertexId> work;
   for (std::size_t v = input_vertices; v < e.num_vertices(); ++v)
@@ -195,6 +196,7 @@ MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const
     if (!keep) continue;
     ++removed;
     moved.push_back(*keep);
+    if (after_step) after_step(moved);
     for (VertexId m : moved) {
       for (VertexId w : topology::vertex_neighbors(e.mesh, m))
         if (w >= input_vertices) work.insert(w);

@@ -19,7 +19,9 @@
 // internal, which would be a bug).
 #include <chrono>
 #include <cstddef>
+#include <functional>
 #include <optional>
+#include <vector>
 
 #include "algorithm/embedding.hpp"
 #include "algorithm/placement.hpp"
@@ -38,10 +40,13 @@ struct MergeResult {
 };
 
 // Merges, relocating collapses (relocating_collapse.hpp), flip collapses (flip_collapse.hpp) and
-// the plain collapses they make possible, over the added vertices (ids >= input_vertices), highest id first, a vertex coming
-// back only when a star it is in changed (or a vertex of it moved).
-// Precondition: no cluster vertex left. Stops when `deadline` (if any) has passed.
+// the plain collapses they make possible, over the added vertices (ids >= input_vertices), highest id first,
+// a vertex coming back only when a star it is in changed (or a vertex of it moved). Precondition: no cluster
+// vertex left. Stops when `deadline` (if any) has passed. `after_step` (if any) is called after every removal
+// with the vertices whose stars hold every tet it changed (the vertex kept, the vertices moved, the vertices
+// of the tets flips made): `--check` checks the invariants there.
 MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,
-                                 const std::optional<std::chrono::steady_clock::time_point>& deadline = {});
+                                 const std::optional<std::chrono::steady_clock::time_point>& deadline = {},
+                                 const std::function<void(const std::vector<VertexId>&)>& after_step = {});
 
 }  // namespace cmx::algorithm

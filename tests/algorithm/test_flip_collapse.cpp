@@ -11,6 +11,7 @@
 
 #include "algorithm/flip_collapse.hpp"
 #include "algorithm/map.hpp"
+#include "algorithm/merge_pass.hpp"
 #include "map_test_util.hpp"
 #include "topology/consistency.hpp"
 
@@ -73,4 +74,29 @@ TEST_CASE("a flip collapse removes an added vertex without moving any and keeps 
   CHECK(flips > 0);
   CHECK(refused > 0);
   CHECK(asked > 0);
+}
+
+TEST_CASE("the merge pass hands every changed star to its after-step hook") {
+  MapOptions o;
+  o.merge = false;
+  const MapResult r = map_checked(problem_from(thin_slab(12, 9, 2, 1), "star:3"), o);
+  Embedding e = embedding_of(r);
+  const std::size_t input = r.stats.input_vertices;
+  std::size_t steps = 0;
+  const auto hook = [&](const std::vector<VertexId>& changed) {
+    ++steps;
+    REQUIRE(!changed.empty());
+    for (VertexId v : changed) {
+      CHECK(!e.mesh.tets_of(v).empty());
+      for (TetId t : e.mesh.tets_of(v)) {
+        CHECK(e.orient_source(e.mesh.tet(t)) == Sign::positive);
+        CHECK(e.orient_target(e.mesh.tet(t)) == Sign::positive);
+      }
+    }
+  };
+  const MergeResult m = merge_added_vertices(e, input, {}, {}, hook);
+  CHECK(m.removed > 0);
+  CHECK(steps == m.removed);
+  CHECK(m.flipping > 0);
+  CHECK(every_tet_positive(e));
 }
