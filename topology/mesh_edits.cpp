@@ -218,14 +218,20 @@ FlipPlan plan_flip_32(const TetMesh& m, VertexId d, VertexId e) {
   }
   const Tet pqde = with_last(m.tet(r.old[0]), d, e);
   const VertexId p = pqde[0], q = pqde[1];
-  VertexId third = invalid_index;
+  // A closed ring of three tets has three ring vertices; a boundary edge in three tets has four.
+  std::vector<VertexId> ring;
   for (TetId t : r.old)
     for (VertexId v : m.tet(t))
-      if (v != d && v != e && v != p && v != q) third = v;
-  if (third == invalid_index) {
-    r.message = "the ring is not three vertices";
+      if (v != d && v != e) ring.push_back(v);
+  std::sort(ring.begin(), ring.end());
+  ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+  if (ring.size() != 3) {
+    r.message = "the ring is not three vertices (a boundary edge)";
     return r;
   }
+  VertexId third = invalid_index;
+  for (VertexId v : ring)
+    if (v != p && v != q) third = v;
   if (!tets_around_face(m, p, q, third).empty()) {
     r.message = "the ring's face is already a face";
     return r;

@@ -234,3 +234,35 @@ TEST_CASE("flips are refused where they would duplicate an edge or a face") {
   CHECK(m.num_tets() == before.num_tets());
   CHECK(check_ball(m).ok);
 }
+
+TEST_CASE("a 3-2 flip is refused on a boundary edge in three tets (an open fan, found by fuzz_flips)") {
+  GridComplex g = grid_complex(2, 2, 2);
+  TetMesh& m = g.mesh;
+  const std::vector<char> on_boundary = boundary_vertex_flags(m);
+  std::size_t open_fans = 0;
+  for (TetId t : m.live_tets()) {
+    const Tet x = m.tet(t);
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const std::vector<TetId> around = tets_around_edge(m, x[i], x[j]);
+        if (around.size() != 3) continue;
+        std::vector<VertexId> ring;
+        for (TetId u : around)
+          for (VertexId v : m.tet(u))
+            if (v != x[i] && v != x[j]) ring.push_back(v);
+        std::sort(ring.begin(), ring.end());
+        ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+        const FlipPlan plan = plan_flip_32(m, x[i], x[j]);
+        if (ring.size() == 4) {
+          ++open_fans;
+          CHECK(on_boundary[x[i]]);
+          CHECK(on_boundary[x[j]]);
+          CHECK_FALSE(plan.ok);
+        } else {
+          CHECK(ring.size() == 3);
+        }
+      }
+  }
+  CHECK(open_fans > 0);
+  CHECK(check_incidences(m).ok);
+}
