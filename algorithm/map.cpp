@@ -162,7 +162,8 @@ void merge(Embedding& e, const MapOptions& options, Clock::time_point start, Map
         throw MapError(MapErrorKind::internal, "the merge pass broke an invariant: " + why);
   };
   const MergeResult m = merge_added_vertices(e, s.input_vertices, options.placement, deadline,
-                                             options.check ? check_around : std::function<void(const std::vector<VertexId>&)>{});
+                                             options.check ? check_around : std::function<void(const std::vector<VertexId>&)>{},
+                                             options.flip_collapse);
   if (m.stopped) {
     e = std::move(*before);
     s.merge_stopped_at_time_limit = true;

@@ -65,6 +65,7 @@ struct MapOptions {
   bool check = false;                         // assert every invariant after every step (slow)
   bool collapse = true;                       // collapse added vertices when the map stays valid
   bool merge = true;                          // ... and merge them, moving the vertex kept (merge_pass.hpp)
+  bool flip_collapse = true;                  // ... and re-cut stars by flips first (flip_collapse.hpp)
   SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/double_output.hpp)
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
   bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)

@@ -154,7 +154,7 @@ class Merger {
 
 MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,
                                  const std::optional<std::chrono::steady_clock::time_point>& deadline,
-                                 const std::function<void(const std::vector<VertexId>&)>& after_step) {
+                                 const std::function<void(const std::vector<VertexId>&)>& after_step, bool flips) {
   Merger merger(e, input_vertices, options);
   std::set<VertexId> work;
   for (std::size_t v = input_vertices; v < e.num_vertices(); ++v)
@@ -187,7 +187,7 @@ MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const
       }
       return std::nullopt;
     };
-    if (!keep)
+    if (!keep && flips)
       if (std::optional<FlipCollapse> f = try_flip_collapse(e, v, moving_removal)) {
         keep = f->keep;
         moved = std::move(f->touched);  // their stars changed, nothing moved

@@ -45,8 +45,10 @@ struct MergeResult {
 // vertex left. Stops when `deadline` (if any) has passed. `after_step` (if any) is called after every removal
 // with the vertices whose stars hold every tet it changed (the vertex kept, the vertices moved, the vertices
 // of the tets flips made): `--check` checks the invariants there.
+// `flips`: whether flip collapses are tried (`--no-flip-collapse` turns them off).
 MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,
                                  const std::optional<std::chrono::steady_clock::time_point>& deadline = {},
-                                 const std::function<void(const std::vector<VertexId>&)>& after_step = {});
+                                 const std::function<void(const std::vector<VertexId>&)>& after_step = {},
+                                 bool flips = true);
 
 }  // namespace cmx::algorithm

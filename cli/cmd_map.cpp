@@ -33,7 +33,7 @@ namespace {
 constexpr const char* usage =
     "usage: cmx map DOMAIN (--boundary B.txt | --codomain MESH | --shape SHAPE) [-o OUT]\n"
     "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--time-limit S] [--check]\n"
-    "               [--no-collapse] [--no-merge] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
+    "               [--no-collapse] [--no-merge] [--no-flip-collapse] [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
     "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
     "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--subclusters N]\n"
@@ -60,6 +60,8 @@ constexpr const char* usage =
     "                    too, in the target only if it is an input vertex; or collapsed into a\n"
     "                    neighbour that stays while up to three other added vertices move, or\n"
     "                    after flips of its star that keep every tet positive)\n"
+    "  --no-flip-collapse  merges as above but without the flips (faster on inputs without interior\n"
+    "                    vertices, which then keep more added vertices)\n"
     "  --no-collapse-refinement  do not collapse, right after each star-shapification, the\n"
     "                    vertices it added (by default they are collapsed wherever every invariant\n"
     "                    survives: paper Sec. 4.2.2)\n"
@@ -211,6 +213,8 @@ std::string parse_args(const std::vector<std::string>& args, Args& a) {
       a.options.collapse = false;
     } else if (x == "--no-merge") {
       a.options.merge = false;
+    } else if (x == "--no-flip-collapse") {
+      a.options.flip_collapse = false;
     } else if (x == "--check") {
       a.check = true;
     } else if (x == "--quiet" || x == "-q") {
@@ -349,6 +353,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   opt.flag("collapse_refinement", a.options.collapse_refinement);
   opt.flag("collapse", a.options.collapse);
   opt.flag("merge", a.options.collapse && a.options.merge);
+  opt.flag("flip_collapse", a.options.collapse && a.options.merge && a.options.flip_collapse);
   opt.num("subclusters", std::uint64_t(a.options.subclusters < 2 ? 0 : a.options.subclusters));
   opt.num("time_limit", a.time_limit);
   j.obj("options", opt);

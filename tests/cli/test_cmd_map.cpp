@@ -281,6 +281,26 @@ TEST_CASE("cmx map --no-merge keeps the vertices merges would remove, and both m
   }
 }
 
+TEST_CASE("cmx map --no-flip-collapse makes no flip collapse, and both maps verify") {
+  const Case c = make_case("slab:12,9", "star:2");  // one layer: every input vertex on the boundary
+  const std::string flipped = c.dir + "/flipped", plain = c.dir + "/plain";
+  auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", flipped, "--report", flipped + ".json"});
+  REQUIRE(r.exit_code == 0);
+  r = run_cmx(
+      {"map", c.mesh, "--boundary", c.boundary, "-o", plain, "--report", plain + ".json", "--no-flip-collapse"});
+  REQUIRE(r.exit_code == 0);
+  const std::string with = slurp(flipped + ".json"), without = slurp(plain + ".json");
+  CHECK(with.find("\"flip_collapse\": true") != std::string::npos);
+  CHECK(without.find("\"flip_collapse\": false") != std::string::npos);
+  CHECK(without.find("\"flip_collapses\": 0,") != std::string::npos);
+  CHECK(with.find("\"flip_collapses\": 0,") == std::string::npos);
+  CHECK(without.find("\"merge\": true") != std::string::npos);  // the merges themselves stay on
+  if (have_checker()) {
+    CHECK(independent_check(c, flipped + ".tmap"));
+    CHECK(independent_check(c, plain + ".tmap"));
+  }
+}
+
 TEST_CASE("cmx map: a NOBUENOSS cluster mesh exits 7 (stuck), says so in the report and writes no map") {
   // Bing's house: the interior vertices span a 2-complex in which every edge lies in two or more
   // triangles, so no cluster vertex satisfies Eq. (1) and nothing can be expanded.
