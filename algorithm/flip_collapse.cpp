@@ -101,19 +101,15 @@ class FlipSearch {
   }
 
   // The failure counts once the plan is made, from the counts before it (a flip of gone's star
-  // brings no new neighbour in).
+  // brings no new neighbour in; every old tet has gone in it).
   std::map<VertexId, std::size_t> after(const topology::FlipPlan& plan) {
     std::map<VertexId, std::size_t> out = failures_;
     out.erase(leaving(plan));
-    std::vector<Tet> gained, lost;
-    for (const Tet& x : plan.fresh)
-      if (topology::contains(x, gone_)) gained.push_back(x);
-    for (TetId t : plan.old) lost.push_back(e_.mesh.tet(t));
     for (auto& [k, n] : out) {
-      for (const Tet& x : lost)
-        if (topology::contains(x, gone_) && !topology::contains(x, k) && fails(x, k)) --n;
-      for (const Tet& x : gained)
-        if (!topology::contains(x, k) && fails(x, k)) ++n;
+      for (TetId t : plan.old)
+        if (!topology::contains(e_.mesh.tet(t), k) && fails(e_.mesh.tet(t), k)) --n;
+      for (const Tet& x : plan.fresh)
+        if (topology::contains(x, gone_) && !topology::contains(x, k) && fails(x, k)) ++n;
     }
     return out;
   }
@@ -170,7 +166,8 @@ class FlipSearch {
         for (VertexId v : e_.mesh.tet(t)) out.touched.push_back(v);
     std::sort(out.touched.begin(), out.touched.end());
     out.touched.erase(std::unique(out.touched.begin(), out.touched.end()), out.touched.end());
-    out.touched.erase(std::remove(out.touched.begin(), out.touched.end(), gone_), out.touched.end());  // no star left
+    out.touched.erase(std::remove(out.touched.begin(), out.touched.end(), gone_),
+                      out.touched.end());  // no star left
     for (TetId t : e_.mesh.tets_of(keep))
       if (e_.orient_source(e_.mesh.tet(t)) != Sign::positive ||
           e_.orient_target(e_.mesh.tet(t)) != Sign::positive)

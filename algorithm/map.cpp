@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -155,15 +154,17 @@ void merge(Embedding& e, const MapOptions& options, Clock::time_point start, Map
   const Deadline deadline = deadline_of(options, start);
   std::optional<Embedding> before;
   if (deadline) before = e;
+  MergeSettings settings;
+  settings.deadline = deadline;
+  settings.flip_collapses = options.flip_collapse;
   // --check: the tets a merge, relocating or flip collapse changed all lie around these vertices.
-  const auto check_around = [&e](const std::vector<VertexId>& changed) {
-    for (VertexId v : changed)
-      if (std::string why = check_local_invariant(e, v); !why.empty())
-        throw MapError(MapErrorKind::internal, "the merge pass broke an invariant: " + why);
-  };
-  const MergeResult m = merge_added_vertices(e, s.input_vertices, options.placement, deadline,
-                                             options.check ? check_around : std::function<void(const std::vector<VertexId>&)>{},
-                                             options.flip_collapse);
+  if (options.check)
+    settings.after_step = [&e](const std::vector<VertexId>& changed) {
+      for (VertexId v : changed)
+        if (std::string why = check_local_invariant(e, v); !why.empty())
+          throw MapError(MapErrorKind::internal, "the merge pass broke an invariant: " + why);
+    };
+  const MergeResult m = merge_added_vertices(e, s.input_vertices, options.placement, settings);
   if (m.stopped) {
     e = std::move(*before);
     s.merge_stopped_at_time_limit = true;

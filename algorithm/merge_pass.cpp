@@ -153,8 +153,8 @@ class Merger {
 }  // namespace
 
 MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,
-                                 const std::optional<std::chrono::steady_clock::time_point>& deadline,
-                                 const std::function<void(const std::vector<VertexId>&)>& after_step, bool flips) {
+                                 const MergeSettings& settings) {
+  const auto& deadline = settings.deadline;
   Merger merger(e, input_vertices, options);
   std::set<VertexId> work;
   for (std::size_t v = input_vertices; v < e.num_vertices(); ++v)
@@ -179,24 +179,26 @@ MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const
         merger.refresh(moved);
         ++out.relocating;
       }
-    const Remover moving_removal = [&]() -> std::optional<Removal> {
-      if (std::optional<VertexId> k = merger.try_merge(v)) return Removal{*k, {}};
-      if (std::optional<RelocatingCollapse> r = try_relocating_collapse(e, v, input_vertices, options)) {
-        merger.refresh(r->movers);
-        return Removal{r->keep, r->movers};
-      }
-      return std::nullopt;
-    };
-    if (!keep && flips)
+    if (!keep && settings.flip_collapses) {
+      // Once flips are made: the two ways above that move vertices, tried again on the new cut.
+      const Remover moving_removal = [&]() -> std::optional<Removal> {
+        if (std::optional<VertexId> k = merger.try_merge(v)) return Removal{*k, {}};
+        if (std::optional<RelocatingCollapse> r = try_relocating_collapse(e, v, input_vertices, options)) {
+          merger.refresh(r->movers);
+          return Removal{r->keep, r->movers};
+        }
+        return std::nullopt;
+      };
       if (std::optional<FlipCollapse> f = try_flip_collapse(e, v, moving_removal)) {
         keep = f->keep;
         moved = std::move(f->touched);  // their stars changed, nothing moved
         ++out.flipping;
       }
+    }
     if (!keep) continue;
     ++removed;
     moved.push_back(*keep);
-    if (after_step) after_step(moved);
+    if (settings.after_step) settings.after_step(moved);
     for (VertexId m : moved) {
       for (VertexId w : topology::vertex_neighbors(e.mesh, m))
         if (w >= input_vertices) work.insert(w);

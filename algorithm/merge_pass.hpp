@@ -39,16 +39,19 @@ struct MergeResult {
   bool stopped = false;        // the deadline passed first: `e` is partly merged (the caller undoes)
 };
 
+struct MergeSettings {
+  std::optional<std::chrono::steady_clock::time_point> deadline;  // stop once it has passed
+  // Called after every removal with the vertices whose stars hold every tet it changed (the vertex
+  // kept, the vertices moved, the vertices of the tets flips made): `--check` checks there.
+  std::function<void(const std::vector<VertexId>&)> after_step;
+  bool flip_collapses = true;  // `--no-flip-collapse` turns them off
+};
+
 // Merges, relocating collapses (relocating_collapse.hpp), flip collapses (flip_collapse.hpp) and
 // the plain collapses they make possible, over the added vertices (ids >= input_vertices), highest id first,
 // a vertex coming back only when a star it is in changed (or a vertex of it moved). Precondition: no cluster
-// vertex left. Stops when `deadline` (if any) has passed. `after_step` (if any) is called after every removal
-// with the vertices whose stars hold every tet it changed (the vertex kept, the vertices moved, the vertices
-// of the tets flips made): `--check` checks the invariants there.
-// `flips`: whether flip collapses are tried (`--no-flip-collapse` turns them off).
+// vertex left.
 MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,
-                                 const std::optional<std::chrono::steady_clock::time_point>& deadline = {},
-                                 const std::function<void(const std::vector<VertexId>&)>& after_step = {},
-                                 bool flips = true);
+                                 const MergeSettings& settings = {});
 
 }  // namespace cmx::algorithm

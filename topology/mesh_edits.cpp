@@ -46,6 +46,28 @@ void boundary_link(const TetMesh& m, VertexId v, std::vector<VertexId>& verts, s
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 }
 
+// The even permutation of t that puts x and y last, as (p, q, x, y). Precondition: x, y in t.
+Tet with_last(const Tet& t, VertexId x, VertexId y) {
+  Tet rest{};
+  int n = 0;
+  for (VertexId v : t)
+    if (v != x && v != y) rest[n++] = v;
+  const Tet candidate{rest[0], rest[1], x, y};
+  // Even iff the permutation t -> candidate has an even number of inversions.
+  std::array<int, 4> pos{};
+  for (int i = 0; i < 4; ++i) pos[i] = local_index(t, candidate[i]);
+  int inversions = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) inversions += pos[i] > pos[j] ? 1 : 0;
+  return inversions % 2 == 0 ? candidate : Tet{rest[1], rest[0], x, y};
+}
+
+bool is_edge(const TetMesh& m, VertexId a, VertexId b) {
+  for (TetId t : m.tets_of(a))
+    if (contains(m.tet(t), b)) return true;
+  return false;
+}
+
 }  // namespace
 
 SplitResult split_edge(TetMesh& m, VertexId a, VertexId b) {
@@ -153,35 +175,6 @@ CollapseResult collapse_edge(TetMesh& m, VertexId keep, VertexId gone) {
   r.ok = true;
   return r;
 }
-
-}  // namespace cmx::topology
-
-namespace cmx::topology {
-namespace {
-
-// The even permutation of t that puts x and y last, as (p, q, x, y). Precondition: x, y in t.
-Tet with_last(const Tet& t, VertexId x, VertexId y) {
-  Tet rest{};
-  int n = 0;
-  for (VertexId v : t)
-    if (v != x && v != y) rest[n++] = v;
-  const Tet candidate{rest[0], rest[1], x, y};
-  // Even iff the permutation t -> candidate has an even number of inversions.
-  std::array<int, 4> pos{};
-  for (int i = 0; i < 4; ++i) pos[i] = local_index(t, candidate[i]);
-  int inversions = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) inversions += pos[i] > pos[j] ? 1 : 0;
-  return inversions % 2 == 0 ? candidate : Tet{rest[1], rest[0], x, y};
-}
-
-bool is_edge(const TetMesh& m, VertexId a, VertexId b) {
-  for (TetId t : m.tets_of(a))
-    if (contains(m.tet(t), b)) return true;
-  return false;
-}
-
-}  // namespace
 
 FlipPlan plan_flip_23(const TetMesh& m, VertexId a, VertexId b, VertexId c) {
   FlipPlan r;

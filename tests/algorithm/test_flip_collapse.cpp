@@ -94,7 +94,9 @@ TEST_CASE("the merge pass hands every changed star to its after-step hook") {
       }
     }
   };
-  const MergeResult m = merge_added_vertices(e, input, {}, {}, hook);
+  MergeSettings settings;
+  settings.after_step = hook;
+  const MergeResult m = merge_added_vertices(e, input, {}, settings);
   CHECK(m.removed > 0);
   CHECK(steps == m.removed);
   CHECK(m.flipping > 0);
