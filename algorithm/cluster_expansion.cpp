@@ -124,9 +124,10 @@ std::optional<ExpansionOutcome> ClusterExpander::check_limits() const {
 
 ExpansionOutcome ClusterExpander::stuck() const {
   if (failures_ == 0)
-    return {MapOutcome::stuck, "NOBUENOSS: " + std::to_string(cluster_) +
-                                   " cluster vertices left and none satisfies Eq. (1) (b0 = chi = 1 of its "
-                                   "unexpanded link)"};
+    return {MapOutcome::stuck,
+            "NOBUENOSS: " + std::to_string(cluster_) +
+                " cluster vertices left and none satisfies Eq. (1) (b0 = chi = 1 of its unexpanded link)",
+            true};
   return {MapOutcome::stuck, std::to_string(cluster_) +
                                  " cluster vertices left; star-shapification or inflation "
                                  "failed for every remaining candidate"};

@@ -56,6 +56,7 @@ struct ExpansionSettings {
 struct ExpansionOutcome {
   MapOutcome outcome = MapOutcome::success;
   std::string message;
+  bool nobuenoss = false;  // stuck because no cluster vertex satisfies Eq. (1)
 };
 
 ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats);

@@ -11,6 +11,7 @@
 #include "algorithm/invariants.hpp"
 #include "algorithm/merge_pass.hpp"
 #include "algorithm/preprocess.hpp"
+#include "algorithm/shelling_fallback.hpp"
 #include "algorithm/validate_problem.hpp"
 #include "topology/cluster_links.hpp"
 
@@ -176,6 +177,19 @@ void merge(Embedding& e, const MapOptions& options, Clock::time_point start, Map
   s.collapsed += m.removed;
 }
 
+// After a NOBUENOSS: the shelling search that the fallback of paper Sec. 4.3 starts with
+// (shelling_fallback.hpp). Its verdict completes the stuck message; the outcome stays stuck.
+void search_fallback(const MapProblem& problem, const MapOptions& options, Clock::time_point start, MapResult& r) {
+  const ShellingVerdict v =
+      search_input_shelling(problem.tets, problem.source.size(), 1, deadline_of(options, start));
+  MapStatistics& s = r.stats;
+  s.nobuenoss = true;
+  s.shelling_found = v.found;
+  s.shelling_attempts = v.attempts;
+  s.shelling_best_removed = v.best_removed;
+  r.message += "; " + v.message;
+}
+
 void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapOptions& options, Clock::time_point start,
                 Embedding& e, MapResult& r) {
   MapStatistics& s = r.stats;
@@ -189,6 +203,7 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
   s.seconds_expand = seconds_since(phase);
   r.outcome = out.outcome;
   r.message = out.message;
+  if (out.nobuenoss) search_fallback(problem, options, start, r);
   if (out.outcome == MapOutcome::success && options.collapse) {
     phase = Clock::now();
     s.collapsed = collapse_added_vertices(e, s.input_vertices);

@@ -104,6 +104,11 @@ struct MapStatistics {
   std::size_t relocating_collapses = 0;       // of those, collapses that moved other added vertices (relocating_collapse.hpp)
   std::size_t flip_collapses = 0;             // of those, collapses made possible by flips (flip_collapse.hpp)
   bool merge_stopped_at_time_limit = false;   // the time limit cut the merges short (all undone)
+  // A NOBUENOSS (stuck, no cluster vertex satisfies Eq. (1)) and the first stage of the
+  // shelling-based fallback of paper Sec. 4.3 (shelling_fallback.hpp): a shelling of the input.
+  bool nobuenoss = false;
+  bool shelling_found = false;
+  std::size_t shelling_attempts = 0, shelling_best_removed = 0;
   std::size_t refinement_collapses = 0;       // added vertices collapsed right after their refinement
   // Double output.
   std::size_t chebyshev_moves = 0;            // exact positions changed by the Chebyshev pass

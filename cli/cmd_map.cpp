@@ -387,6 +387,13 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   ex.num("relocating_collapses", std::uint64_t(s.relocating_collapses));
   ex.num("flip_collapses", std::uint64_t(s.flip_collapses));
   ex.flag("merge_stopped_at_time_limit", s.merge_stopped_at_time_limit);
+  ex.flag("nobuenoss", s.nobuenoss);
+  if (s.nobuenoss) {
+    JsonObject shell;
+    shell.flag("found", s.shelling_found).num("attempts", std::uint64_t(s.shelling_attempts));
+    shell.num("best_removed", std::uint64_t(s.shelling_best_removed)).num("tets", std::uint64_t(s.input_tets));
+    ex.obj("input_shelling", shell);
+  }
   ex.num("refinement_collapses", std::uint64_t(s.refinement_collapses));
   ex.num("lps", std::uint64_t(s.lps)).num("lps_certified", std::uint64_t(s.lps_certified));
   ex.num("lps_exact_fallback", std::uint64_t(s.lps_fell_back));

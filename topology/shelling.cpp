@@ -80,6 +80,10 @@ ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
   const std::vector<TetId> live = m.live_tets();
   const TetAdjacency adj = tet_adjacency(m);
   for (std::size_t attempt = 0; attempt < std::max<std::size_t>(options.max_attempts, 1); ++attempt) {
+    if (attempt > 0 && options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
+      r.stopped_at_deadline = true;
+      break;
+    }
     ++r.attempts;
     std::mt19937_64 rng(options.seed + 0x9e3779b97f4a7c15ull * attempt);
     std::vector<std::uint64_t> key(m.tet_capacity(), 0);
@@ -114,7 +118,8 @@ ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
     }
   }
   r.message = "no shelling found within " + std::to_string(r.attempts) + " greedy attempts (best removed " +
-              std::to_string(r.best_removed) + " of " + std::to_string(live.size()) + " tets)";
+              std::to_string(r.best_removed) + " of " + std::to_string(live.size()) + " tets)" +
+              (r.stopped_at_deadline ? ", cut short by the deadline" : "");
   return r;
 }
 

@@ -14,7 +14,9 @@
 // Not finding a shelling within the bound proves nothing (the ball may still be shellable).
 
 #include <array>
+#include <chrono>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,8 @@ namespace cmx::topology {
 struct ShellingOptions {
   std::size_t max_attempts = 8;
   std::uint64_t seed = 1;
+  // Checked before each attempt (an attempt is not cut short): no new attempt starts after it.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
 };
 
 struct ShellingResult {
@@ -33,6 +37,7 @@ struct ShellingResult {
   std::vector<TetId> order;  // removal order (all live tets) when found
   std::size_t attempts = 0;
   std::size_t best_removed = 0;  // most tets removed by one attempt
+  bool stopped_at_deadline = false;  // fewer than max_attempts ran because of options.deadline
   std::string message;
 };
 

@@ -314,6 +314,13 @@ TEST_CASE("cmx map: a NOBUENOSS cluster mesh exits 7 (stuck), says so in the rep
   const std::string json = slurp(report);
   CHECK(json.find("\"status\": \"stuck\"") != std::string::npos);
   CHECK(json.find("none satisfies Eq. (1)") != std::string::npos);
+  // The fallback's shelling search ran on the input and found none (greedy shelling of this ball
+  // gets stuck), and the message says that the fallback needs one.
+  CHECK(json.find("\"nobuenoss\": true") != std::string::npos);
+  CHECK(json.find("\"input_shelling\"") != std::string::npos);
+  CHECK(json.find("\"found\": false") != std::string::npos);
+  CHECK(json.find("\"attempts\": 8") != std::string::npos);
+  CHECK(r.err.find("no shelling of the input found") != std::string::npos);
 }
 
 TEST_CASE("cmx map --arith: double maps and verifies, too few bits exits 8 saying where, bad names exit 2") {

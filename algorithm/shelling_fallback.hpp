@@ -1,0 +1,39 @@
+#pragma once
+// What cmx does after a NOBUENOSS (paper Sec. 4.1.1): the first stage of the shelling-based
+// fallback of paper Sec. 4.3, the search for a shelling of the input ball.
+//
+// The fallback applies only to shellable inputs: Alg. 2 turns a shelling into an expansion
+// sequence. The search is greedy (topology/shelling.hpp) and bounded; not finding a shelling does
+// not prove that none exists, but both NOBUENOSS inputs the project knows (Furch's knotted hole,
+// which is not shellable, and the ball around Bing's house) defeat it. Replaying a shelling
+// geometrically is not built: docs/algorithm.md records why the paper's Alg. 2 does not keep the
+// method's invariants as stated, and the attempts made. So a NOBUENOSS always ends as `stuck`;
+// this stage says whether the input is known to be shellable, which is what a user can act on
+// (a non-shellable input needs remeshing, a shellable one is a case for the missing replay).
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "topology/tet_mesh.hpp"
+
+namespace cmx::algorithm {
+
+struct ShellingVerdict {
+  bool found = false;
+  std::size_t attempts = 0;
+  std::size_t best_removed = 0;  // most tets one greedy attempt removed
+  std::size_t tets = 0;
+  std::string message;  // one sentence for the stuck message
+};
+
+// At most `max_attempts` greedy attempts with seeds derived from `seed`; none starts after
+// `deadline`. O(attempts * T log T).
+ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, std::size_t num_vertices,
+                                      std::uint64_t seed,
+                                      std::optional<std::chrono::steady_clock::time_point> deadline,
+                                      std::size_t max_attempts = 8);
+
+}  // namespace cmx::algorithm

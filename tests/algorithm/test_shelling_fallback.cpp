@@ -1,0 +1,47 @@
+// The NOBUENOSS fallback's first stage: the search for a shelling of the input.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "algorithm/shelling_fallback.hpp"
+#include "topology/nobuenoss.hpp"
+
+namespace {
+
+std::vector<cmx::topology::Tet> tets_of(const cmx::topology::TetMesh& m) {
+  std::vector<cmx::topology::Tet> out;
+  for (cmx::topology::TetId t : m.live_tets()) out.push_back(m.tet(t));
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("shelling search: found on the unknotted control, not on Furch's knotted hole, both said") {
+  const auto control = cmx::topology::unknotted_hole_ball();
+  const auto yes = cmx::algorithm::search_input_shelling(tets_of(control.mesh), control.mesh.num_vertices(),
+                                                         1, std::nullopt, 2);
+  CHECK(yes.found);
+  CHECK(yes.best_removed == control.mesh.num_tets());
+  CHECK(yes.message.find("the input is shellable") != std::string::npos);
+  CHECK(yes.message.find("not built") != std::string::npos);
+
+  const auto knot = cmx::topology::knotted_hole_ball();
+  const auto no =
+      cmx::algorithm::search_input_shelling(tets_of(knot.mesh), knot.mesh.num_vertices(), 1, std::nullopt, 2);
+  CHECK_FALSE(no.found);
+  CHECK(no.attempts == 2);
+  CHECK(no.tets == knot.mesh.num_tets());
+  CHECK(no.best_removed > 0);
+  CHECK(no.best_removed < no.tets);
+  CHECK(no.message.find("no shelling of the input found in 2 greedy attempts") != std::string::npos);
+  CHECK(no.message.find(std::to_string(no.best_removed) + " of " + std::to_string(no.tets)) !=
+        std::string::npos);
+
+  // A time limit already passed: one attempt, and the message says it was cut short.
+  const auto late = cmx::algorithm::search_input_shelling(tets_of(knot.mesh), knot.mesh.num_vertices(), 1,
+                                                          std::chrono::steady_clock::now(), 4);
+  CHECK(late.attempts == 1);
+  CHECK(late.message.find("cut short by the time limit") != std::string::npos);
+}
