@@ -100,7 +100,10 @@ constexpr const char* usage =
     "4 not a valid problem (not a ball, boundary mismatch, degenerate or mirrored boundary);\n"
     "5 boundary not star-shaped; 6 time limit; 7 stuck; 8 precision lost (--arith double|mpfr:BITS);\n"
     "9 an output file cannot be written (checked before computing); 10 internal error (please report).\n"
-    "On any failure no output file is written (an existing one is left untouched).\n";
+    "On any failure no output file is written (an existing one is left untouched).\n"
+    "Stuck on a NOBUENOSS (no cluster vertex satisfies Eq. (1)), the run then searches for a shelling\n"
+    "of the input (8 greedy attempts), which the paper's fallback needs, and says whether it found one;\n"
+    "replaying a shelling is not built, so the exit code stays 7.\n";
 
 struct Args {
   std::string domain, boundary, codomain, shape, out, report, trace;
