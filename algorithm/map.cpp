@@ -180,9 +180,11 @@ void merge(Embedding& e, const MapOptions& options, Clock::time_point start, Map
 // After a NOBUENOSS: the shelling search that the fallback of paper Sec. 4.3 starts with
 // (shelling_fallback.hpp). Its verdict completes the stuck message; the outcome stays stuck.
 void search_fallback(const MapProblem& problem, const MapOptions& options, Clock::time_point start, MapResult& r) {
+  const auto phase = Clock::now();
   const ShellingVerdict v =
       search_input_shelling(problem.tets, problem.source.size(), 1, deadline_of(options, start));
   MapStatistics& s = r.stats;
+  s.seconds_shelling_search = seconds_since(phase);
   s.nobuenoss = true;
   s.shelling_found = v.found;
   s.shelling_attempts = v.attempts;

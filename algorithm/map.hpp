@@ -128,6 +128,7 @@ struct MapStatistics {
   double seconds_validate = 0, seconds_preprocess = 0, seconds_expand = 0, seconds_collapse = 0, seconds_verify = 0,
          seconds_double = 0, seconds_total = 0;
   double seconds_subcluster_search = 0;       // part of seconds_expand spent looking for subclusters
+  double seconds_shelling_search = 0;         // after a NOBUENOSS (shelling_fallback.hpp)
   FilterStats filter;
 };
 

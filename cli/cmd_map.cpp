@@ -408,6 +408,7 @@ JsonObject report_json(const Args& a, const algorithm::MapResult* r, const std::
   bits.num("max", std::uint64_t(s.max_bits)).num("mean", s.mean_bits);
   times.num("validate", s.seconds_validate).num("preprocess", s.seconds_preprocess).num("expand", s.seconds_expand);
   times.num("subcluster_search", s.seconds_subcluster_search);
+  times.num("shelling_search", s.seconds_shelling_search);
   times.num("collapse", s.seconds_collapse).num("double", s.seconds_double);
   times.num("verify", s.seconds_verify).num("total", s.seconds_total);
   rusage usage{};

@@ -320,6 +320,7 @@ TEST_CASE("cmx map: a NOBUENOSS cluster mesh exits 7 (stuck), says so in the rep
   CHECK(json.find("\"input_shelling\"") != std::string::npos);
   CHECK(json.find("\"found\": false") != std::string::npos);
   CHECK(json.find("\"attempts\": 8") != std::string::npos);
+  CHECK(json.find("\"shelling_search\": 0,") == std::string::npos);  // timed, and it took a while
   CHECK(r.err.find("no shelling of the input found") != std::string::npos);
 }
 
