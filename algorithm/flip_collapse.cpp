@@ -35,7 +35,7 @@ class FlipSearch {
     for (std::size_t step = 0; step < max_flips && best > 0; ++step) {
       std::optional<Choice> c = best_flip();
       if (!c || c->score > best) break;
-      failures_ = after(c->plan);
+      failures_ = std::move(c->failures);
       made_.push_back(topology::apply_flip(e_.mesh, c->plan));
       seen_.insert(key(c->plan.fresh));
       seen_.insert(key(made_.back().removed));  // never undone by a later flip
@@ -52,6 +52,7 @@ class FlipSearch {
  private:
   struct Choice {
     topology::FlipPlan plan;
+    std::map<VertexId, std::size_t> failures;  // after(plan), kept for when the plan is made
     std::size_t score = 0;
   };
 
@@ -114,8 +115,6 @@ class FlipSearch {
     return out;
   }
 
-  std::size_t score(const topology::FlipPlan& plan) { return smallest(after(plan)); }
-
   std::vector<topology::FlipPlan> candidates() const {
     std::vector<topology::FlipPlan> out;
     std::set<std::pair<VertexId, VertexId>> faces;
@@ -143,8 +142,9 @@ class FlipSearch {
       if (!plan.ok || seen_.count(key(plan.fresh))) continue;
       if (!std::all_of(plan.fresh.begin(), plan.fresh.end(), [&](const Tet& x) { return positive(x); }))
         continue;
-      const std::size_t s = score(plan);
-      if (!best || s < best->score) best = Choice{std::move(plan), s};
+      std::map<VertexId, std::size_t> failures = after(plan);
+      const std::size_t s = smallest(failures);
+      if (!best || s < best->score) best = Choice{std::move(plan), std::move(failures), s};
     }
     return best;
   }

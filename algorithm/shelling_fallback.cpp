@@ -17,7 +17,7 @@ ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, st
   ShellingVerdict v;
   v.found = r.found;
   v.attempts = r.attempts;
-  v.best_removed = r.found ? tets.size() : r.best_removed;
+  v.best_removed = r.best_removed;  // all tets when found
   v.tets = tets.size();
   if (r.found)
     v.message =

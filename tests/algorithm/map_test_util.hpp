@@ -48,6 +48,13 @@ inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh,
   return problem_from(mesh, exact, pos, shape);
 }
 
+// The live tets' vertex tuples, in handle order (a refused edit must leave exactly these).
+inline std::vector<topology::Tet> live_tet_tuples(const algorithm::Embedding& e) {
+  std::vector<topology::Tet> out;
+  for (topology::TetId t : e.mesh.live_tets()) out.push_back(e.mesh.tet(t));
+  return out;
+}
+
 // The mesh's own boundary positions as the prescribed boundary (a trivially valid problem when
 // the domain is star-shaped around its kernel).
 inline algorithm::MapProblem identity_problem(const algorithm::GeneratedDomain& d) {

@@ -22,9 +22,9 @@ using namespace cmx::test;
 namespace {
 
 // The live tets in a canonical order (a refused search may put tets back under new handles).
+// Undone flips put tets back under new handles: compare as sets.
 std::vector<topology::Tet> sorted_tets(const Embedding& e) {
-  std::vector<topology::Tet> out;
-  for (TetId t : e.mesh.live_tets()) out.push_back(e.mesh.tet(t));
+  std::vector<topology::Tet> out = live_tet_tuples(e);
   std::sort(out.begin(), out.end());
   return out;
 }
