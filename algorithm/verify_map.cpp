@@ -25,13 +25,22 @@ std::string tet_text(const topology::Tet& t) { return ids_text(t); }
 // checks), for tets whose twelve coordinates are all doubles: det[b-a, c-a, d-a] evaluated in
 // Shewchuk's order for orient3d, whose rounding error is at most (7 + 56 eps) eps times the
 // permanent (eps = 2^-53; J. R. Shewchuk, Adaptive Precision Floating-Point Arithmetic, 1997),
-// provided nothing underflows or overflows: every nonzero difference lies in [2^-500, 2^300], so
-// every product and sum is a normal double. Otherwise, or when |det| is within the bound: exact.
-// The static bounds below hold when nothing underflows or overflows: every nonzero difference of
-// coordinates in [2^-500, 2^300] keeps every product and sum a normal double.
-bool in_filter_range(const double* v, int n) {
+// provided nothing underflows or overflows. Otherwise, or when |det| is within the bound: exact.
+//
+// The ranges that guarantee this, on the nonzero differences of coordinates (a zero difference
+// makes its products exactly zero): orient3d multiplies three differences and then eps, so
+// [2^-300, 2^300] keeps every triple product in [2^-900, 2^900] and the bound above 2^-960,
+// normal doubles all. orient2d multiplies two: [2^-400, 2^400] keeps the products in
+// [2^-800, 2^800] and its bound normal. A wider orient3d range, [2^-500, 2^300], let triple
+// products of differences near 2^-350 fall into the subnormals, where their rounding error
+// exceeds the bound: the filter then answered wrong signs (test_verify_orient.cpp scans that
+// window).
+constexpr double orient3d_min_difference = 0x1p-300, orient3d_max_difference = 0x1p300;
+constexpr double orient2d_min_difference = 0x1p-400, orient2d_max_difference = 0x1p400;
+
+bool in_filter_range(const double* v, int n, double lo, double hi) {
   for (int k = 0; k < n; ++k)
-    if (v[k] != 0 && !(std::fabs(v[k]) >= 0x1p-500 && std::fabs(v[k]) <= 0x1p300)) return false;
+    if (v[k] != 0 && !(std::fabs(v[k]) >= lo && std::fabs(v[k]) <= hi)) return false;
   return true;
 }
 
@@ -44,7 +53,7 @@ std::optional<Sign> static_orient(const HPoint& pa, const HPoint& pb, const HPoi
     v[3 + i] = b[std::size_t(i)] - d[std::size_t(i)];
     v[6 + i] = c[std::size_t(i)] - d[std::size_t(i)];
   }
-  if (!in_filter_range(v, 9)) return std::nullopt;
+  if (!in_filter_range(v, 9, orient3d_min_difference, orient3d_max_difference)) return std::nullopt;
   const double adx = v[0], ady = v[1], adz = v[2], bdx = v[3], bdy = v[4], bdz = v[5], cdx = v[6], cdy = v[7], cdz = v[8];
   const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy, cdxady = cdx * ady, adxcdy = adx * cdy, adxbdy = adx * bdy,
                bdxady = bdx * ady;
@@ -109,14 +118,14 @@ PlaneTriangle make_triangle(const HPoint& a, const HPoint& b, const HPoint& c) {
 }
 
 // Sign of projected_area(p, q, r, drop): with all-double inputs first by the static bound of
-// Shewchuk's orient2d, (3 + 16 eps) eps times the permanent (same ranges as static_orient).
+// Shewchuk's orient2d, (3 + 16 eps) eps times the permanent (in its range, above).
 int projected_sign(const HPoint& hp, const HPoint& hq, const HPoint& hr, int drop) {
   const int i = drop == 0 ? 1 : 0, j = drop == 2 ? 1 : 2;
   if (hp.is_double() && hq.is_double() && hr.is_double()) {
     const auto p = hp.approx(), q = hq.approx(), r = hr.approx();
     const double v[4] = {q[std::size_t(i)] - p[std::size_t(i)], r[std::size_t(j)] - p[std::size_t(j)],
                          q[std::size_t(j)] - p[std::size_t(j)], r[std::size_t(i)] - p[std::size_t(i)]};
-    if (in_filter_range(v, 4)) {
+    if (in_filter_range(v, 4, orient2d_min_difference, orient2d_max_difference)) {
       const double left = v[0] * v[1], right = v[2] * v[3], det = left - right;
       constexpr double eps = 0x1p-53;
       const double bound = (3.0 + 16.0 * eps) * eps * (std::fabs(left) + std::fabs(right));

@@ -38,3 +38,26 @@ TEST_CASE("the verifier's static filter never disagrees with the exact sign") {
   CHECK(disagreements == 0);
   CHECK(zeros > 1000);  // the hard cases are really there
 }
+
+TEST_CASE("the verifier's static filter steps aside where triple products would be subnormal") {
+  // Differences near 2^-350 keep every coordinate in any plausible filter range while their
+  // triple products fall below 2^-1022, where rounding is no longer relative: the window in
+  // which a filter guarded on the differences alone answers wrong signs.
+  Rng r(20261201);
+  int disagreements = 0, decided = 0;
+  for (int i = 0; i < 40000; ++i) {
+    Quad q;
+    switch (i % 3) {
+      case 0: q = on_plane(r); break;
+      case 1: q = mixed_coplanar(r); break;
+      default: q = on_plane(r, 1e3); break;
+    }
+    perturb_ulps(r, q);
+    q = scaled(q, -(290 + int(r.below(100))));
+    const int expected = exact_sign(q);
+    decided += expected != 0;
+    if (verifier_sign(q) != expected) ++disagreements;
+  }
+  CHECK(disagreements == 0);
+  CHECK(decided > 10000);
+}
