@@ -112,7 +112,7 @@ std::optional<Entry> ClusterExpander::pop() {
 }
 
 std::optional<ExpansionOutcome> ClusterExpander::check_limits() const {
-  if (s_.deadline && std::chrono::steady_clock::now() > *s_.deadline)
+  if (s_.control && s_.control->should_stop("expansion"))
     return ExpansionOutcome{MapOutcome::time_limit,
                             "time limit reached with " + std::to_string(cluster_) + " cluster vertices left"};
   if (s_.vertex_budget && e_.num_vertices() > s_.vertex_budget)

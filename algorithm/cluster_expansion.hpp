@@ -34,6 +34,7 @@
 
 #include "algorithm/embedding.hpp"
 #include "algorithm/map.hpp"
+#include "algorithm/run_control.hpp"
 
 namespace cmx::algorithm {
 
@@ -41,7 +42,7 @@ struct ExpansionSettings {
   PlacementOptions placement;
   topology::ExpansionOrder order;
   bool check = false;
-  std::optional<std::chrono::steady_clock::time_point> deadline;
+  RunControl* control = nullptr;  // polled before every step: the time limit and the stop hook
   std::chrono::steady_clock::time_point start;
   std::function<void(const MapProgress&)> progress;
   std::function<void(const TraceRow&)> trace;

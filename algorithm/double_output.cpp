@@ -7,6 +7,7 @@
 
 #include "algorithm/decrowd.hpp"
 #include "algorithm/expansion_cone.hpp"
+#include "algorithm/run_control.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
 
@@ -35,19 +36,19 @@ std::string_view to_string(SnapPolicy p) {
 }
 
 namespace {
-bool passed(const Deadline& deadline) {
-  return deadline && std::chrono::steady_clock::now() > *deadline;
+bool passed(RunControl* control) {
+  return control && control->should_stop("doubles");
 }
 std::size_t bad_tets(const DoubleCheck& c) {
   return c.inverted + c.degenerate;
 }
 }  // namespace
 
-ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options, const Deadline& deadline) {
+ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options, RunControl* control) {
   ChebyshevPassResult r;
   for (VertexId v = 0; v < e.num_vertices(); ++v) {
     if (e.boundary[v] || e.unexpanded[v] || e.mesh.tets_of(v).empty()) continue;
-    if (r.lps % 64 == 0 && passed(deadline)) break;
+    if (control && control->step("doubles", v, e.num_vertices())) break;
     ++r.lps;
     if (recentre(e, v, options)) ++r.moved;
   }
@@ -168,11 +169,11 @@ std::size_t local_exact_round(Embedding& e, const std::vector<VertexId>& offende
 // doubles) with `rescan()` after each, until the doubles are valid, a round moves nothing, `cap`
 // rounds, or `patience` rounds without fewer bad tets.
 template <class Round, class Rescan>
-void repair_rounds(Scan& now, std::size_t& rounds, std::size_t cap, const Deadline& deadline, Round round,
+void repair_rounds(Scan& now, std::size_t& rounds, std::size_t cap, RunControl* control, Round round,
                    Rescan rescan) {
   constexpr std::size_t patience = 3;
   std::size_t best = bad_tets(now.check), stale = 0;
-  while (rounds < cap && !now.check.valid() && stale < patience && !passed(deadline)) {
+  while (rounds < cap && !now.check.valid() && stale < patience && !passed(control)) {
     ++rounds;
     const std::size_t moved = round(now.offenders);
     now = rescan();
@@ -255,7 +256,7 @@ std::vector<std::pair<VertexId, std::array<double, 3>>> reround_boundary(const E
 // worse, measured on the polycube bird).
 template <class Rescan>
 void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vector<VertexId>& crowd,
-                       const PlacementOptions& options, const Deadline& deadline, Rescan rescan) {
+                       const PlacementOptions& options, RunControl* control, Rescan rescan) {
   const auto positions = [&] {
     std::vector<HPoint> p;
     p.reserve(crowd.size());
@@ -265,7 +266,7 @@ void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vecto
   constexpr std::size_t cap = 300, patience = 10;
   std::vector<HPoint> best_positions = positions();
   std::size_t best = bad_tets(now.check), stale = 0;
-  for (std::size_t sweeps = 0; sweeps < cap && stale < patience && !now.check.valid() && !passed(deadline);) {
+  for (std::size_t sweeps = 0; sweeps < cap && stale < patience && !now.check.valid() && !passed(control);) {
     ++sweeps, ++out.crowd_sweeps;
     const std::size_t moved = sweep_crowd(e, crowd, options, out.lps);
     out.chebyshev_moves += moved;
@@ -289,26 +290,26 @@ void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vecto
 // 209, 11 and 0 bad tets after each of four passes).
 template <class Rounded>
 void open_crowds(Embedding& e, Scan& now, DoubleMap& out, const PlacementOptions& options,
-                 const Deadline& deadline, Rounded rounded) {
+                 RunControl* control, Rounded rounded) {
   const auto rescan = [&] {
     out.target = rounded();
     now = scan(e, out.target);
   };
   constexpr int max_passes = 8;
-  for (int pass = 0; pass < max_passes && !now.check.valid() && !passed(deadline); ++pass) {
+  for (int pass = 0; pass < max_passes && !now.check.valid() && !passed(control); ++pass) {
     const std::size_t before = bad_tets(now.check);
     const std::size_t scalings = scale_crowds(e);
     out.crowd_scalings += scalings;
     if (scalings > 0) rescan();
     const std::vector<VertexId> crowd = crowd_around_center(e);
     if (now.check.valid() || crowd.empty()) return;
-    sweep_until_stale(e, now, out, crowd, options, deadline, rescan);
+    sweep_until_stale(e, now, out, crowd, options, control, rescan);
     if (bad_tets(now.check) >= before) return;
   }
 }
 
 DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& options,
-                       const Deadline& deadline) {
+                       RunControl* control) {
   DoubleMap out;
   if (policy == SnapPolicy::repair) {
     // The pass exists to make the doubles valid: when the plain rounding already is, it is the
@@ -329,7 +330,7 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
   };
   out.boundary_rerounded = reround.size();
   if (policy == SnapPolicy::chebyshev_pass || policy == SnapPolicy::repair) {
-    const ChebyshevPassResult pass = chebyshev_pass(e, options, deadline);
+    const ChebyshevPassResult pass = chebyshev_pass(e, options, control);
     out.chebyshev_moves = pass.moved;
     out.lps += pass.lps;
   }
@@ -340,14 +341,14 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
   out.check = now.check;
   if (policy != SnapPolicy::repair || now.check.valid()) return out;
 
-  open_crowds(e, now, out, options, deadline, rounded);
+  open_crowds(e, now, out, options, control, rounded);
   out.check = now.check;
   if (now.check.valid()) return out;
 
   // First in the exact map, where every move is safe (measured on tgs_100349: a crowd of vertices
   // within 1e-19 of each other does not open in 32 rounds); then among the doubles themselves.
   repair_rounds(
-      now, out.exact_rounds, 32, deadline,
+      now, out.exact_rounds, 32, control,
       [&](const std::vector<VertexId>& offenders) {
         const std::size_t moved = local_exact_round(e, offenders, options, out.lps);
         out.chebyshev_moves += moved;
@@ -368,7 +369,7 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
   d.target.reserve(e.num_vertices());
   for (const auto& q : out.target) d.target.push_back(HPoint::from_doubles(q[0], q[1], q[2]));
   repair_rounds(
-      now, out.rounds, 16, deadline,
+      now, out.rounds, 16, control,
       [&](const std::vector<VertexId>& offenders) {
         const std::size_t moved = repair_round(d, offenders, out.target, options, out.lps);
         out.repaired += moved;
@@ -382,10 +383,10 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
 }  // namespace
 
 DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOptions& options,
-                          const Deadline& deadline) {
-  const std::vector<HPoint> before = deadline ? e.target : std::vector<HPoint>{};
-  DoubleMap out = snap_doubles(e, policy, options, deadline);
-  if (!out.checked || out.check.valid() || !passed(deadline)) return out;
+                          RunControl* control) {
+  const std::vector<HPoint> before = control && control->can_stop() ? e.target : std::vector<HPoint>{};
+  DoubleMap out = snap_doubles(e, policy, options, control);
+  if (!out.checked || out.check.valid() || !passed(control)) return out;
   // Cut short by the time limit: where it stopped depends on timing, so undo every move and give
   // the plain rounding of the exact map as it was (the same whenever the limit is hit).
   e.target = before;

@@ -22,7 +22,6 @@
 // position is not a double the double map's boundary differs from it by that rounding; a tet of
 // boundary vertices only that the rounding flattens cannot be repaired).
 #include <array>
-#include <chrono>
 #include <cstddef>
 #include <optional>
 #include <string_view>
@@ -33,6 +32,8 @@
 #include "algorithm/verify_map.hpp"
 
 namespace cmx::algorithm {
+
+class RunControl;  // run_control.hpp (which includes map.hpp, which includes this header)
 
 enum class SnapPolicy : std::uint8_t { none, nearest, chebyshev_pass, repair };
 std::optional<SnapPolicy> parse_snap_policy(std::string_view name);
@@ -45,9 +46,8 @@ struct ChebyshevPassResult {
 
 // The Gauss-Seidel pass on the exact map (no cluster vertex left). Vertices with boundary[v] set
 // never move.
-// Past `deadline` (when given) the pass stops: every move made kept the map valid.
-using Deadline = std::optional<std::chrono::steady_clock::time_point>;
-ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options, const Deadline& deadline = {});
+// Told to stop by `control` (when given), the pass stops: every move made kept the map valid.
+ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options, RunControl* control = nullptr);
 
 struct DoubleMap {
   bool checked = false;                       // false for SnapPolicy::none
@@ -66,11 +66,12 @@ struct DoubleMap {
 
 // Runs `policy` on the finished exact map `e` (no cluster vertex left) and returns the doubles.
 // chebyshev-pass and repair move exact positions, each move inside the kernel of the vertex's
-// star, so the exact map stays valid (it is verified after this, independently). Past `deadline`
-// the pass and the repair stop; unless the doubles are valid by then, every move is undone and
-// the result is the plain rounding of the exact map as it was (deterministic, unlike the point
-// where the time ran out), with stopped_at_deadline set.
+// star, so the exact map stays valid (it is verified after this, independently). Told to stop by
+// `control` (the time limit, or the caller's stop hook; phase "doubles"), the pass and the repair
+// stop; unless the doubles are valid by then, every move is undone and the result is the plain
+// rounding of the exact map as it was (deterministic, unlike the point where the time ran out),
+// with stopped_at_deadline set.
 DoubleMap make_double_map(Embedding& e, SnapPolicy policy, const PlacementOptions& options,
-                          const Deadline& deadline = {});
+                          RunControl* control = nullptr);
 
 }  // namespace cmx::algorithm

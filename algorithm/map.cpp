@@ -106,19 +106,14 @@ void preprocess(Embedding& e, const ValidatedProblem& v, const MapOptions& optio
   r.center = e.center;
 }
 
-Deadline deadline_of(const MapOptions& options, Clock::time_point start) {
-  if (options.time_limit_seconds <= 0) return std::nullopt;
-  return start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.time_limit_seconds));
-}
-
-ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_point start,
+ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_point start, RunControl& control,
                                      const std::vector<HPoint>& prescribed, std::size_t input_vertices) {
   ExpansionSettings settings;
   settings.placement = options.placement;
   settings.order = options.order;
   settings.check = options.check;
   settings.start = start;
-  settings.deadline = deadline_of(options, start);
+  settings.control = &control;
   settings.progress = options.progress;
   settings.trace = options.trace;
   settings.smooth_every = options.smooth_every;
@@ -135,9 +130,10 @@ SnapPolicy snap_policy(const MapOptions& options) {
   return options.placement.arith.exact() ? options.snap : SnapPolicy::nearest;
 }
 
-void make_doubles(Embedding& e, const MapOptions& options, Clock::time_point start, MapResult& r) {
+void make_doubles(Embedding& e, const MapOptions& options, RunControl& control, MapResult& r) {
   MapStatistics& s = r.stats;
-  r.doubles = make_double_map(e, snap_policy(options), options.placement, deadline_of(options, start));
+  control.report("doubles", 0);
+  r.doubles = make_double_map(e, snap_policy(options), options.placement, &control);
   s.chebyshev_moves = r.doubles.chebyshev_moves;
   s.snap_exact_rounds = r.doubles.exact_rounds;
   s.snap_crowd_scalings = r.doubles.crowd_scalings;
@@ -151,12 +147,11 @@ void make_doubles(Embedding& e, const MapOptions& options, Clock::time_point sta
 // Merges (merge_pass.hpp), exact runs only: a merge may pick a midpoint, which a non-exact
 // arithmetic may not hold. Cut short by the time limit they are all undone, so that the result
 // does not depend on where the time ran out.
-void merge(Embedding& e, const MapOptions& options, Clock::time_point start, MapStatistics& s) {
-  const Deadline deadline = deadline_of(options, start);
+void merge(Embedding& e, const MapOptions& options, RunControl& control, MapStatistics& s) {
   std::optional<Embedding> before;
-  if (deadline) before = e;
+  if (control.can_stop()) before = e;
   MergeSettings settings;
-  settings.deadline = deadline;
+  settings.control = &control;
   settings.flip_collapses = options.flip_collapse;
   // --check: the tets a merge, relocating or flip collapse changed all lie around these vertices.
   if (options.check)
@@ -179,10 +174,10 @@ void merge(Embedding& e, const MapOptions& options, Clock::time_point start, Map
 
 // After a NOBUENOSS: the shelling search that the fallback of paper Sec. 4.3 starts with
 // (shelling_fallback.hpp). Its verdict completes the stuck message; the outcome stays stuck.
-void search_fallback(const MapProblem& problem, const MapOptions& options, Clock::time_point start, MapResult& r) {
+void search_fallback(const MapProblem& problem, RunControl& control, MapResult& r) {
   const auto phase = Clock::now();
-  const ShellingVerdict v =
-      search_input_shelling(problem.tets, problem.source.size(), 1, deadline_of(options, start));
+  control.report("shelling search", 0);
+  const ShellingVerdict v = search_input_shelling(problem.tets, problem.source.size(), 1, &control);
   MapStatistics& s = r.stats;
   s.seconds_shelling_search = seconds_since(phase);
   s.nobuenoss = true;
@@ -193,7 +188,7 @@ void search_fallback(const MapProblem& problem, const MapOptions& options, Clock
 }
 
 void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapOptions& options, Clock::time_point start,
-                Embedding& e, MapResult& r) {
+                RunControl& control, Embedding& e, MapResult& r) {
   MapStatistics& s = r.stats;
   auto phase = Clock::now();
   std::vector<HPoint> prescribed;
@@ -201,15 +196,16 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
   s.seconds_preprocess = seconds_since(phase);
 
   phase = Clock::now();
-  const ExpansionOutcome out = expand_cluster(e, expansion_settings(options, start, prescribed, s.input_vertices), s);
+  const ExpansionOutcome out = expand_cluster(e, expansion_settings(options, start, control, prescribed, s.input_vertices), s);
   s.seconds_expand = seconds_since(phase);
   r.outcome = out.outcome;
   r.message = out.message;
-  if (out.nobuenoss) search_fallback(problem, options, start, r);
+  if (out.nobuenoss) search_fallback(problem, control, r);
   if (out.outcome == MapOutcome::success && options.collapse) {
     phase = Clock::now();
+    control.report("collapse", 0);
     s.collapsed = collapse_added_vertices(e, s.input_vertices);
-    if (options.merge && options.placement.arith.exact()) merge(e, options, start, s);
+    if (options.merge && options.placement.arith.exact()) merge(e, options, control, s);
     s.seconds_collapse = seconds_since(phase);
     if (options.check)
       if (std::string why = check_invariants(e, prescribed); !why.empty())
@@ -218,12 +214,13 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
   compact_vertices(e, s.input_vertices);  // vertices collapsed away, or inflation splits undone
   if (out.outcome == MapOutcome::success) {
     phase = Clock::now();
-    make_doubles(e, options, start, r);
+    make_doubles(e, options, control, r);
     s.seconds_double = seconds_since(phase);
   }
   fill_output(e, r);
   if (r.outcome != MapOutcome::success) return;
   phase = Clock::now();
+  control.report("verification", 0);
   VerificationInput in{&problem.tets, &v.source, &problem.boundary_vertices, &v.boundary_positions};
   r.verification = verify_map(in, r.tets, r.source, r.target);
   s.seconds_verify = seconds_since(phase);
@@ -267,8 +264,9 @@ MapResult map_to_domain(const MapProblem& given, const MapOptions& options) {
     }
     s.seconds_validate = seconds_since(start);
     Embedding e = initial_embedding(v, options.filter, options.placement.arith, &s.filter);
+    RunControl control(options, start);
     try {
-      run_method(problem, v, options, start, e, r);
+      run_method(problem, v, options, start, control, e, r);
     } catch (const PrecisionLost&) {
       r.tets.clear();
       fill_output(e, r);  // the state where validity was lost

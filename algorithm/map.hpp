@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "algorithm/double_output.hpp"
@@ -34,7 +35,11 @@ struct MapProblem {
   std::vector<Point3> boundary_positions;     // boundary_positions[i] for boundary_vertices[i]
 };
 
+// What the progress callback gets. During the expansion: the cluster counts below. In later
+// phases ("collapse", "doubles", "verification"): done of total steps (total 0: unknown).
 struct MapProgress {
+  const char* phase = "expansion";
+  std::size_t done = 0, total = 0;
   std::size_t expanded = 0, remaining = 0;    // cluster vertices expanded so far / still left
   std::size_t splits = 0;                     // vertices added so far (preprocessing included)
   std::size_t max_bits = 0;                   // largest coordinate bit size so far
@@ -61,7 +66,7 @@ struct MapOptions {
   FilterPolicy filter;                        // predicate arithmetic
   PlacementOptions placement;                 // LP backend, norm, precision reduction, coordinate arith
   topology::ExpansionOrder order;             // priority (default), index, random:SEED
-  double time_limit_seconds = 0;              // 0 = none
+  double time_limit_seconds = 0;              // 0 = none; huge or infinite = none (run_control.hpp)
   bool check = false;                         // assert every invariant after every step (slow)
   bool collapse = true;                       // collapse added vertices when the map stays valid
   bool merge = true;                          // ... and merge them, moving the vertex kept (merge_pass.hpp)
@@ -71,6 +76,11 @@ struct MapOptions {
   bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)
   std::size_t subclusters = 4;                // largest subcluster expanded at once, 2..4 (Sec. 4.2.5); 0 or 1: off
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
+  // Polled between steps of every phase with the phase's name ("expansion", "collapse",
+  // "doubles", "shelling search"); once it returns true the run stops exactly as at the time
+  // limit (outcome time_limit, or the phase's work undone where the time limit undoes it). For
+  // cancelling a run (a signal, a GUI) and for cutting it at a reproducible point.
+  std::function<bool(std::string_view phase)> stop;
   // Called after every expansion when set (costs a pass over vertices and tets per row).
   std::function<void(const TraceRow&)> trace;
 };

@@ -154,15 +154,14 @@ class Merger {
 
 MergeResult merge_added_vertices(Embedding& e, std::size_t input_vertices, const PlacementOptions& options,
                                  const MergeSettings& settings) {
-  const auto& deadline = settings.deadline;
   Merger merger(e, input_vertices, options);
   std::set<VertexId> work;
   for (std::size_t v = input_vertices; v < e.num_vertices(); ++v)
     if (!e.mesh.tets_of(VertexId(v)).empty()) work.insert(VertexId(v));
   MergeResult out;
   std::size_t& removed = out.removed;
-  for (std::size_t step = 0; !work.empty(); ++step) {
-    if (deadline && step % 64 == 0 && std::chrono::steady_clock::now() > *deadline) {
+  while (!work.empty()) {
+    if (settings.control && settings.control->step("collapse", removed)) {
       out.stopped = true;
       return out;
     }

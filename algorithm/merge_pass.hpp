@@ -17,7 +17,6 @@
 // A float screen only ever skips a merge, which is always safe; whatever is taken is checked
 // exactly: every tet around `keep` is strictly positive in both afterwards (else MapError
 // internal, which would be a bug).
-#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -25,6 +24,7 @@
 
 #include "algorithm/embedding.hpp"
 #include "algorithm/placement.hpp"
+#include "algorithm/run_control.hpp"
 
 namespace cmx::algorithm {
 
@@ -36,11 +36,11 @@ struct MergeResult {
   std::size_t removed = 0;     // vertices left without tets (compact_vertices removes them)
   std::size_t relocating = 0;  // of those, by relocating collapses (relocating_collapse.hpp)
   std::size_t flipping = 0;    // of those, by flip collapses (flip_collapse.hpp)
-  bool stopped = false;        // the deadline passed first: `e` is partly merged (the caller undoes)
+  bool stopped = false;        // told to stop first: `e` is partly merged (the caller undoes)
 };
 
 struct MergeSettings {
-  std::optional<std::chrono::steady_clock::time_point> deadline;  // stop once it has passed
+  RunControl* control = nullptr;  // polled before every removal attempt (phase "collapse")
   // Called after every removal with the vertices whose stars hold every tet it changed (the vertex
   // kept, the vertices moved, the vertices of the tets flips made): `--check` checks there.
   std::function<void(const std::vector<VertexId>&)> after_step;

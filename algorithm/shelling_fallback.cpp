@@ -5,14 +5,12 @@
 namespace cmx::algorithm {
 
 ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, std::size_t num_vertices,
-                                      std::uint64_t seed,
-                                      std::optional<std::chrono::steady_clock::time_point> deadline,
-                                      std::size_t max_attempts) {
+                                      std::uint64_t seed, RunControl* control, std::size_t max_attempts) {
   const topology::TetMesh input(num_vertices, tets);
   topology::ShellingOptions options;
   options.max_attempts = max_attempts;
   options.seed = seed;
-  options.deadline = deadline;
+  if (control) options.should_stop = [control] { return control->should_stop("shelling search"); };
   const topology::ShellingResult r = topology::find_shelling(input, options);
   ShellingVerdict v;
   v.found = r.found;

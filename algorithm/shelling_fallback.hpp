@@ -10,13 +10,12 @@
 // method's invariants as stated, and the attempts made. So a NOBUENOSS always ends as `stuck`;
 // this stage says whether the input is known to be shellable, which is what a user can act on
 // (a non-shellable input needs remeshing, a shellable one is a case for the missing replay).
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "algorithm/run_control.hpp"
 #include "topology/tet_mesh.hpp"
 
 namespace cmx::algorithm {
@@ -29,11 +28,9 @@ struct ShellingVerdict {
   std::string message;  // one sentence for the stuck message
 };
 
-// At most `max_attempts` greedy attempts with seeds derived from `seed`; none starts after
-// `deadline`. O(attempts * T log T).
+// At most `max_attempts` greedy attempts with seeds derived from `seed`; none but the first
+// starts once `control` (when given) says stop. O(attempts * T log T).
 ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, std::size_t num_vertices,
-                                      std::uint64_t seed,
-                                      std::optional<std::chrono::steady_clock::time_point> deadline,
-                                      std::size_t max_attempts = 8);
+                                      std::uint64_t seed, RunControl* control, std::size_t max_attempts = 8);
 
 }  // namespace cmx::algorithm

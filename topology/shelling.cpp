@@ -80,7 +80,7 @@ ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
   const std::vector<TetId> live = m.live_tets();
   const TetAdjacency adj = tet_adjacency(m);
   for (std::size_t attempt = 0; attempt < std::max<std::size_t>(options.max_attempts, 1); ++attempt) {
-    if (attempt > 0 && options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
+    if (attempt > 0 && options.should_stop && options.should_stop()) {
       r.stopped_at_deadline = true;
       break;
     }

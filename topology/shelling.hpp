@@ -14,8 +14,8 @@
 // Not finding a shelling within the bound proves nothing (the ball may still be shellable).
 
 #include <array>
-#include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,8 +28,9 @@ namespace cmx::topology {
 struct ShellingOptions {
   std::size_t max_attempts = 8;
   std::uint64_t seed = 1;
-  // Checked before each attempt (an attempt is not cut short): no new attempt starts after it.
-  std::optional<std::chrono::steady_clock::time_point> deadline;
+  // Polled before each attempt but the first (an attempt is not cut short): once it returns
+  // true no new attempt starts. The caller's deadline, or any other reason to stop.
+  std::function<bool()> should_stop;
 };
 
 struct ShellingResult {
@@ -37,7 +38,7 @@ struct ShellingResult {
   std::vector<TetId> order;  // removal order (all live tets) when found
   std::size_t attempts = 0;
   std::size_t best_removed = 0;  // most tets removed by one attempt
-  bool stopped_at_deadline = false;  // fewer than max_attempts ran because of options.deadline
+  bool stopped_at_deadline = false;  // fewer than max_attempts ran because of options.should_stop
   std::string message;
 };
 

@@ -10,6 +10,7 @@
 #include "algorithm/double_output.hpp"
 #include "algorithm/expansion_cone.hpp"
 #include "algorithm/map.hpp"
+#include "algorithm/run_control.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
 #include "map_test_util.hpp"
@@ -166,13 +167,45 @@ TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair
 
   // A time limit already passed: no move is made, the doubles are checked as they stand.
   Embedding late = e;
-  const DoubleMap stopped =
-      make_double_map(late, SnapPolicy::repair, {}, std::chrono::steady_clock::now() - std::chrono::seconds(1));
+  MapOptions past;
+  past.time_limit_seconds = 1e-9;
+  RunControl control(past, std::chrono::steady_clock::now() - std::chrono::seconds(1));
+  const DoubleMap stopped = make_double_map(late, SnapPolicy::repair, {}, &control);
   CHECK(stopped.stopped_at_deadline);
   CHECK(stopped.chebyshev_moves == 0);
   CHECK(stopped.check.degenerate == plain.check.degenerate);
   CHECK(stopped.target == plain.target);
   CHECK(late.target == e.target);
+
+  // Stopped at any poll of the repair: the exact map stays valid, and the doubles are the valid
+  // doubles of a finished repair or the plain rounding of the exact map as it was.
+  std::size_t polls = 0;
+  {
+    MapOptions counting;
+    counting.stop = [&](std::string_view phase) {
+      CHECK(phase == "doubles");
+      ++polls;
+      return false;
+    };
+    Embedding copy = e;
+    RunControl never(counting, std::chrono::steady_clock::now());
+    CHECK(make_double_map(copy, SnapPolicy::repair, {}, &never).check.valid());
+  }
+  REQUIRE(polls > 2);
+  for (std::size_t cut = 0; cut < polls; ++cut) {
+    CAPTURE(cut);
+    MapOptions cutting;
+    std::size_t seen = 0;
+    cutting.stop = [&](std::string_view) { return seen++ >= cut; };
+    Embedding copy = e;
+    RunControl control(cutting, std::chrono::steady_clock::now());
+    const DoubleMap d = make_double_map(copy, SnapPolicy::repair, {}, &control);
+    for (TetId t : copy.mesh.live_tets()) CHECK(copy.orient_target(copy.mesh.tet(t)) == Sign::positive);
+    if (d.check.valid()) continue;
+    CHECK(d.stopped_at_deadline);
+    CHECK(d.target == plain.target);
+    CHECK(copy.target == e.target);
+  }
 
   const DoubleMap mended = make_double_map(e, SnapPolicy::repair, {});
   CHECK(mended.check.valid());

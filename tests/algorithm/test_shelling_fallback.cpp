@@ -21,7 +21,7 @@ std::vector<cmx::topology::Tet> tets_of(const cmx::topology::TetMesh& m) {
 TEST_CASE("shelling search: found on the unknotted control, not on Furch's knotted hole, both said") {
   const auto control = cmx::topology::unknotted_hole_ball();
   const auto yes = cmx::algorithm::search_input_shelling(tets_of(control.mesh), control.mesh.num_vertices(),
-                                                         1, std::nullopt, 2);
+                                                         1, nullptr, 2);
   CHECK(yes.found);
   CHECK(yes.best_removed == control.mesh.num_tets());
   CHECK(yes.message.find("the input is shellable") != std::string::npos);
@@ -29,7 +29,7 @@ TEST_CASE("shelling search: found on the unknotted control, not on Furch's knott
 
   const auto knot = cmx::topology::knotted_hole_ball();
   const auto no =
-      cmx::algorithm::search_input_shelling(tets_of(knot.mesh), knot.mesh.num_vertices(), 1, std::nullopt, 2);
+      cmx::algorithm::search_input_shelling(tets_of(knot.mesh), knot.mesh.num_vertices(), 1, nullptr, 2);
   CHECK_FALSE(no.found);
   CHECK(no.attempts == 2);
   CHECK(no.tets == knot.mesh.num_tets());
@@ -40,8 +40,11 @@ TEST_CASE("shelling search: found on the unknotted control, not on Furch's knott
         std::string::npos);
 
   // A time limit already passed: one attempt, and the message says it was cut short.
-  const auto late = cmx::algorithm::search_input_shelling(tets_of(knot.mesh), knot.mesh.num_vertices(), 1,
-                                                          std::chrono::steady_clock::now(), 4);
+  cmx::algorithm::MapOptions options;
+  options.time_limit_seconds = 1e-9;
+  cmx::algorithm::RunControl past(options, std::chrono::steady_clock::now() - std::chrono::seconds(1));
+  const auto late =
+      cmx::algorithm::search_input_shelling(tets_of(knot.mesh), knot.mesh.num_vertices(), 1, &past, 4);
   CHECK(late.attempts == 1);
   CHECK(late.message.find("cut short by the time limit") != std::string::npos);
 }

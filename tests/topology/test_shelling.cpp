@@ -140,10 +140,10 @@ TEST_CASE("Alg. 2: shelling -> expansion sequence, each step leaves a ball and s
 
 TEST_CASE("Furch: greedy shelling peels the unknotted-hole ball but not the knotted-hole ball") {
   const GridComplex control = unknotted_hole_ball();
-  const ShellingResult ok = find_shelling(control.mesh, {2, 1, std::nullopt});
+  const ShellingResult ok = find_shelling(control.mesh, {2, 1, {}});
   CHECK(ok.found);
   const GridComplex knot = knotted_hole_ball();
-  const ShellingResult no = find_shelling(knot.mesh, {2, 1, std::nullopt});
+  const ShellingResult no = find_shelling(knot.mesh, {2, 1, {}});
   CHECK(!no.found);
   CHECK(no.attempts == 2);
   CHECK(no.best_removed > 0);
@@ -176,15 +176,15 @@ TEST_CASE("Furch: greedy shelling peels the unknotted-hole ball but not the knot
   CHECK(failures == 0);
 }
 
-TEST_CASE("find_shelling starts no attempt after its deadline, but always makes the first") {
+TEST_CASE("find_shelling starts no attempt once told to stop, but always makes the first") {
   const GridComplex knot = knotted_hole_ball();
-  ShellingOptions late{4, 1, std::chrono::steady_clock::now() - std::chrono::seconds(1)};
+  ShellingOptions late{4, 1, [] { return true; }};
   const ShellingResult r = find_shelling(knot.mesh, late);
   CHECK(!r.found);
   CHECK(r.attempts == 1);
   CHECK(r.stopped_at_deadline);
   CHECK(r.message.find("cut short by the deadline") != std::string::npos);
-  const ShellingResult free = find_shelling(knot.mesh, {2, 1, std::nullopt});
+  const ShellingResult free = find_shelling(knot.mesh, {2, 1, {}});
   CHECK(free.attempts == 2);
   CHECK(!free.stopped_at_deadline);
   CHECK(free.message.find("deadline") == std::string::npos);
