@@ -164,6 +164,19 @@ TEST_CASE("second-order Medit TetrahedraP2") {
   check_corners(read_medit(text + "End\n", "q.mesh"), f);
 }
 
+TEST_CASE("linear and 10-node tets mixed: a node that is a corner of any tet is kept") {
+  // Tet 1 is linear (1 2 3 4); tet 2 is quadratic (1 3 2 5) and lists node 4, a corner of tet 1,
+  // among its mid-edge nodes, with nodes 6-10.
+  std::string nodes = "$Nodes\n10\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0 0 -1\n";
+  for (int i = 6; i <= 10; ++i) nodes += std::to_string(i) + " 0." + std::to_string(i) + " 0.1 0\n";
+  const auto m = read_gmsh("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n" + nodes +
+                               "$EndNodes\n$Elements\n2\n1 4 0 1 2 3 4\n2 11 0 1 3 2 5 4 6 7 8 9 10\n$EndElements\n",
+                           "mixed.msh");
+  CHECK(m.positions.size() == 5);
+  CHECK(m.dropped_higher_order_nodes == 5);
+  CHECK(m.tets == std::vector<Tet>{{0, 1, 2, 3}, {0, 2, 1, 4}});
+}
+
 TEST_CASE("linear files keep every vertex and report no dropped nodes") {
   const auto m = read_tetgen("5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 5 5 5\n", "l.node", "1 4 0\n0 0 1 2 3\n", "l.ele");
   CHECK(m.positions.size() == 5);
