@@ -17,14 +17,11 @@ class Base64Reader {
   enum class Status { ok, ended, invalid };
 
   // Appends the next `n` decoded bytes to `out`. `ended`: the text ran out first; `invalid`: a
-  // character outside the alphabet (position() says where). Either way `out` holds what was
-  // decoded.
+  // character outside the alphabet. Either way `out` holds what was decoded.
   Status read(std::size_t n, std::string& out);
 
   // At most this many bytes are still to come (for bounding sizes before allocating).
   std::size_t remaining_bound() const { return (text_.size() - pos_) / 4 * 3 + 3 + pending_.size(); }
-  // Offset in the text of the next character to decode (or of the invalid character).
-  std::size_t position() const { return pos_; }
 
  private:
   bool decode_quantum(std::string& into);  // false at the end of the text or on a bad character
