@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <vector>
 
 #include "io/io_error.hpp"
 
@@ -24,34 +23,57 @@ mode_t default_file_mode() {
   return mode_t(0666) & ~mask;
 }
 
-}  // namespace
-
-void write_file_atomically(const std::string& path, const std::function<void(std::ostream&)>& body) {
+// Creates an empty temporary next to `path` and returns its name.
+std::string create_temporary(const std::string& path) {
   std::string pattern = path + ".tmp.XXXXXX";
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = mkstemp(name.data());
   if (fd < 0) throw IoError(ErrorKind::write_failed, path, 0, "cannot create a temporary file next to it: " + errno_text());
-  const std::string tmp = name.data();
   fchmod(fd, default_file_mode());
   close(fd);
+  return name.data();
+}
+
+// Writes the body into the temporary `tmp` of `path` and syncs it to disk.
+void fill_temporary(const std::string& path, const std::string& tmp, const FileBody& body) {
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw IoError(ErrorKind::write_failed, path, 0, "cannot open temporary file " + tmp);
+    body(out);
+    out.flush();
+    if (!out) throw IoError(ErrorKind::write_failed, path, 0, "write error (disk full?)");
+  }
+  const int sync_fd = open(tmp.c_str(), O_RDONLY);
+  if (sync_fd >= 0) {
+    fsync(sync_fd);
+    close(sync_fd);
+  }
+}
+
+void rename_into_place(const std::string& tmp, const std::string& path) {
+  if (std::rename(tmp.c_str(), path.c_str()) != 0)
+    throw IoError(ErrorKind::write_failed, path, 0, "cannot rename the temporary file into place: " + errno_text());
+}
+
+}  // namespace
+
+void write_file_atomically(const std::string& path, const FileBody& body) { write_files_atomically({{path, body}}); }
+
+void write_files_atomically(const std::vector<std::pair<std::string, FileBody>>& files) {
+  std::vector<std::string> temporaries;
   try {
-    {
-      std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-      if (!out) throw IoError(ErrorKind::write_failed, path, 0, "cannot open temporary file " + tmp);
-      body(out);
-      out.flush();
-      if (!out) throw IoError(ErrorKind::write_failed, path, 0, "write error (disk full?)");
+    for (const auto& [path, body] : files) {
+      temporaries.push_back(create_temporary(path));
+      fill_temporary(path, temporaries.back(), body);
     }
-    const int sync_fd = open(tmp.c_str(), O_RDONLY);
-    if (sync_fd >= 0) {
-      fsync(sync_fd);
-      close(sync_fd);
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      rename_into_place(temporaries[i], files[i].first);
+      temporaries[i].clear();  // renamed: nothing left to remove
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0)
-      throw IoError(ErrorKind::write_failed, path, 0, "cannot rename the temporary file into place: " + errno_text());
   } catch (...) {
-    std::remove(tmp.c_str());
+    for (const auto& tmp : temporaries)
+      if (!tmp.empty()) std::remove(tmp.c_str());
     throw;
   }
 }

@@ -11,7 +11,7 @@ namespace cmx::io {
 
 enum class ErrorKind {
   open_failed,        // the file cannot be opened or read
-  unsupported,        // a valid file of a dialect/feature cmx does not read (e.g. OVM BINARY, zlib VTU)
+  unsupported,        // a valid file of a dialect/feature cmx does not read (e.g. OVM BINARY, LZMA-compressed VTU)
   syntax,             // a token or keyword that does not belong there
   truncated,          // the data ends before what the header promised
   count_mismatch,     // a count contradicts the data (e.g. a cell with 5 vertices in CELLS)

@@ -2,12 +2,14 @@
 // Lenient on what trips other readers: keyword case, a keyword's value on the same or the next
 // line, CRLF, '#' comments, unknown sections (skipped by their count), a missing `End`.
 // Indices are 1-based in the file; every item ends with an integer reference (ignored).
+// TetrahedraP2 (10-node tets) contribute their corners (io/second_order.hpp).
 #include <cctype>
 #include <cstdint>
 
 #include "io/orientation.hpp"
 #include "io/read_mesh.hpp"
 #include "io/scanner.hpp"
+#include "io/second_order.hpp"
 
 namespace cmx::io {
 namespace {
@@ -33,6 +35,39 @@ int fields_per_item(const std::string& keyword) {
   return 0;
 }
 
+// The 3D cell sections other than tetrahedra, with what they hold; nullptr for other keywords.
+const char* refused_3d_cells(const std::string& keyword) {
+  if (keyword == "hexahedra" || keyword == "hexaedra" || keyword == "prisms" || keyword == "pyramids") return "linear 3D cells";
+  if (keyword == "hexahedraq2" || keyword == "prismsp2" || keyword == "pyramidsp2" || keyword == "tetrahedrap3")
+    return "second-order or higher-order 3D cells";
+  return nullptr;
+}
+
+// Reads a Tetrahedra (4 nodes) or TetrahedraP2 (10 nodes: corners, then mid-edge nodes) section:
+// a count, then per item the 1-based node indices and a reference.
+void read_tets(Scanner& s, int nodes, bool have_vertices, TetMeshData& mesh, std::vector<std::size_t>& tet_lines,
+               HigherOrderNodes& higher_order) {
+  const auto n = s.count("tetrahedron count", max_tets, std::size_t(2 * nodes + 2));
+  mesh.tets.reserve(mesh.tets.size() + std::size_t(n));
+  tet_lines.reserve(tet_lines.size() + std::size_t(n));
+  for (std::uint64_t i = 0; i < n; ++i) {
+    s.skip_space();
+    tet_lines.push_back(s.line());
+    Tet t;
+    for (int k = 0; k < nodes; ++k) {
+      const auto index = s.unsigned_integer("vertex index");
+      if (index == 0 || index > mesh.positions.size() + (have_vertices ? 0 : max_vertices))
+        s.fail(ErrorKind::index_out_of_range,
+               "vertex index " + std::to_string(index) + " out of range (Medit indices are 1-based; " +
+                   std::to_string(mesh.positions.size()) + " vertices)");
+      if (k < 4) t[std::size_t(k)] = std::uint32_t(index - 1);
+      else higher_order.add(std::uint32_t(index - 1));
+    }
+    s.integer("tetrahedron reference");
+    mesh.tets.push_back(t);
+  }
+}
+
 }  // namespace
 
 TetMeshData read_medit(std::string_view bytes, const std::string& name, const ReadOptions& options) {
@@ -40,7 +75,8 @@ TetMeshData read_medit(std::string_view bytes, const std::string& name, const Re
   s.set_comment_char('#');
   TetMeshData mesh;
   std::vector<std::size_t> tet_lines;
-  bool have_version = false, have_vertices = false, have_tets = false;
+  bool have_version = false, have_vertices = false, have_tets = false, have_p2 = false;
+  HigherOrderNodes higher_order;
   int dimension = 3;
   while (s.skip_space()) {
     const auto raw = s.token("keyword");
@@ -64,37 +100,23 @@ TetMeshData read_medit(std::string_view bytes, const std::string& name, const Re
         mesh.positions.push_back(std::move(p));
       }
       have_vertices = true;
-    } else if (keyword == "tetrahedra") {
-      if (have_tets) s.fail(ErrorKind::syntax, "a second Tetrahedra section");
-      const auto n = s.count("tetrahedron count", max_tets, 10);
-      mesh.tets.reserve(std::size_t(n));
-      tet_lines.reserve(std::size_t(n));
-      for (std::uint64_t i = 0; i < n; ++i) {
-        s.skip_space();
-        tet_lines.push_back(s.line());
-        Tet t;
-        for (auto& v : t) {
-          const auto index = s.unsigned_integer("vertex index");
-          if (index == 0 || index > mesh.positions.size() + (have_vertices ? 0 : max_vertices))
-            s.fail(ErrorKind::index_out_of_range,
-                   "vertex index " + std::to_string(index) + " out of range (Medit indices are 1-based; " +
-                       std::to_string(mesh.positions.size()) + " vertices)");
-          v = std::uint32_t(index - 1);
-        }
-        s.integer("tetrahedron reference");
-        mesh.tets.push_back(t);
-      }
-      have_tets = true;
+    } else if (keyword == "tetrahedra" || keyword == "tetrahedrap2") {
+      const bool p2 = keyword == "tetrahedrap2";
+      if (p2 ? have_p2 : have_tets) s.fail(ErrorKind::syntax, "a second " + std::string(raw) + " section");
+      (p2 ? have_p2 : have_tets) = true;
+      read_tets(s, p2 ? 10 : 4, have_vertices, mesh, tet_lines, higher_order);
     } else if (keyword == "end") {
       break;
     } else {
       // Unknown or uninteresting section: "<Keyword> <count>" then count items.
       const int fields = fields_per_item(keyword);
-      if (keyword == "hexahedra" || keyword == "prisms" || keyword == "pyramids" || keyword == "tetrahedrap2") {
+      if (const char* what = refused_3d_cells(keyword)) {
         s.skip_space();
         const std::size_t at = s.line();
         if (s.unsigned_integer("item count") > 0)
-          s.fail_at(at, ErrorKind::non_tet_cell, "section " + quoted(raw) + ": only linear tetrahedra are supported among 3D cells");
+          s.fail_at(at, ErrorKind::non_tet_cell,
+                    "section " + quoted(raw) + " (" + what +
+                        "): among 3D cells only Tetrahedra and TetrahedraP2 (read as their corners) are supported");
         continue;
       }
       const auto n = s.count("item count of section " + std::string(quoted(raw)), UINT64_MAX / 4, 2);
@@ -117,6 +139,9 @@ TetMeshData read_medit(std::string_view bytes, const std::string& name, const Re
     for (auto v : mesh.tets[i])
       if (v >= mesh.positions.size())
         s.fail_at(tet_lines[i], ErrorKind::index_out_of_range, "vertex index " + std::to_string(v + 1) + " out of range (" + std::to_string(mesh.positions.size()) + " vertices)");
+  if (!higher_order.all_below(mesh.positions.size()))
+    s.fail(ErrorKind::index_out_of_range, "a TetrahedraP2 mid-edge vertex index is out of range (" + std::to_string(mesh.positions.size()) + " vertices)");
+  higher_order.drop_unused(mesh);
   validate_and_orient(mesh, options, name, tet_lines);
   return mesh;
 }

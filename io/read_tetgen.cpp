@@ -1,13 +1,15 @@
 // TetGen .node/.ele reader. .node: "n dim nattr nmarker" then "index x y z [attrs] [marker]";
 // .ele: "m nodes_per_tet nattr" then "index a b c d [more nodes] [attrs]". '#' comments. The first
 // index in .node decides whether indices are 0- or 1-based (TetGen's -z switch); node indices must
-// then be consecutive. Second-order tets (10 nodes) contribute their four corners. The orientation
-// convention is detected (io/orientation.hpp).
+// then be consecutive. Second-order tets (10 nodes) contribute their four corners and their
+// mid-edge nodes are dropped (io/second_order.hpp). The orientation convention is detected
+// (io/orientation.hpp).
 #include <cstdint>
 
 #include "io/orientation.hpp"
 #include "io/read_mesh.hpp"
 #include "io/scanner.hpp"
+#include "io/second_order.hpp"
 
 namespace cmx::io {
 
@@ -44,6 +46,7 @@ TetMeshData read_tetgen(std::string_view node_bytes, const std::string& node_nam
     }
   }
   std::vector<std::size_t> tet_lines;
+  HigherOrderNodes higher_order;
   {
     Scanner s(ele_bytes, ele_name);
     s.set_comment_char('#');
@@ -63,6 +66,7 @@ TetMeshData read_tetgen(std::string_view node_bytes, const std::string& node_nam
           s.fail(ErrorKind::index_out_of_range, "node index " + std::to_string(v) + " out of range (" + std::to_string(mesh.positions.size()) +
                                                     " nodes, numbered from " + std::to_string(base) + ")");
         if (k < 4) t[k] = std::uint32_t(v - base);
+        else higher_order.add(std::uint32_t(v - base));
       }
       for (std::uint64_t k = 0; k < nattr; ++k) s.rational("region attribute");
       if (s.more_on_line()) s.fail_at(line, ErrorKind::count_mismatch, "tetrahedron line has more fields than the header announces");
@@ -70,6 +74,7 @@ TetMeshData read_tetgen(std::string_view node_bytes, const std::string& node_nam
       tet_lines.push_back(line);
     }
   }
+  higher_order.drop_unused(mesh);
   validate_and_orient(mesh, options, ele_name, tet_lines);
   return mesh;
 }

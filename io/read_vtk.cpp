@@ -1,8 +1,9 @@
 // Legacy VTK reader (UNSTRUCTURED_GRID only). Handles the 4.2 layout (`CELLS n size` followed by
 // "k i0 .. ik-1" per cell) and the 5.1 layout (`CELLS n+1 size`, `OFFSETS type`, `CONNECTIVITY
 // type`), ASCII and BINARY (big-endian, as the format prescribes). Point and cell data sections
-// are ignored. VTK's tetra convention is det[b-a, c-a, d-a] > 0, but files in the wild (Galaxy
-// Maps) list tets negatively, so the sign is detected (io/orientation.hpp).
+// are ignored. Cell types: io/vtk_cell_types.hpp. VTK's tetra convention is det[b-a, c-a, d-a] > 0,
+// but files in the wild (Galaxy Maps) list tets negatively, so the sign is detected
+// (io/orientation.hpp).
 #include <cmath>
 #include <cstdint>
 
@@ -10,6 +11,8 @@
 #include "io/orientation.hpp"
 #include "io/read_mesh.hpp"
 #include "io/scanner.hpp"
+#include "io/second_order.hpp"
+#include "io/vtk_cell_types.hpp"
 
 namespace cmx::io {
 namespace {
@@ -63,18 +66,6 @@ class Numbers {
   bool binary_;
 };
 
-// Cell types of dimension 0 to 2 (skipped) versus everything else (rejected unless 10).
-bool is_lower_dimensional(std::int64_t type) {
-  switch (type) {
-    case 1: case 2: case 3: case 4: case 5: case 6: case 7: case 8: case 9:  // linear 0D-2D
-    case 21: case 22: case 23: case 28: case 30: case 34: case 35: case 36: case 37:  // quadratic/cubic 1D-2D
-    case 68: case 69: case 70: case 75: case 76: case 77:  // Lagrange / Bezier curves and surfaces
-      return true;
-    default:
-      return false;
-  }
-}
-
 }  // namespace
 
 TetMeshData read_vtk(std::string_view bytes, const std::string& name, const ReadOptions& options) {
@@ -104,6 +95,7 @@ TetMeshData read_vtk(std::string_view bytes, const std::string& name, const Read
   std::vector<std::uint32_t> connectivity;
   std::vector<std::size_t> cell_lines;
   std::vector<std::size_t> tet_lines;
+  HigherOrderNodes higher_order;
 
   const auto read_connectivity_index = [&](const NumberType& type) {
     const auto v = numbers.index(type, "point index");
@@ -199,17 +191,19 @@ TetMeshData read_vtk(std::string_view bytes, const std::string& name, const Read
       mesh.tets.reserve(plausible_count(n, connectivity.size(), 4));
       for (std::uint64_t c = 0; c < n; ++c) {
         const auto type = std::int64_t(numbers.index(int32, "cell type"));
+        const auto kind = vtk_cell_kind(type);
+        if (kind == VtkCellKind::lower_dimensional) continue;
+        if (kind == VtkCellKind::refused) s.fail_at(cell_lines[c], ErrorKind::non_tet_cell, vtk_refusal(c, type));
+        const std::uint64_t nodes = kind == VtkCellKind::tetrahedron ? 4 : 10;
         const auto k = offsets[c + 1] - offsets[c];
-        if (type == 10) {
-          if (k != 4)
-            s.fail_at(cell_lines[c], ErrorKind::count_mismatch, "cell " + std::to_string(c) + " is a tetrahedron (type 10) with " + std::to_string(k) + " points");
-          const auto* v = &connectivity[std::size_t(offsets[c])];
-          mesh.tets.push_back({v[0], v[1], v[2], v[3]});
-          tet_lines.push_back(cell_lines[c]);
-        } else if (!is_lower_dimensional(type)) {
-          s.fail_at(cell_lines[c], ErrorKind::non_tet_cell,
-                    "cell " + std::to_string(c) + " has VTK type " + std::to_string(type) + "; only tetrahedra (10) are supported among 3D cells");
-        }
+        if (k != nodes)
+          s.fail_at(cell_lines[c], ErrorKind::count_mismatch,
+                    "cell " + std::to_string(c) + " of VTK type " + std::to_string(type) + " has " + std::to_string(k) + " points, not " +
+                        std::to_string(nodes));
+        const auto* v = &connectivity[std::size_t(offsets[c])];
+        mesh.tets.push_back({v[0], v[1], v[2], v[3]});
+        for (std::uint64_t j = 4; j < nodes; ++j) higher_order.add(v[j]);
+        tet_lines.push_back(cell_lines[c]);
       }
       have_types = true;
     } else if (keyword == "POINT_DATA" || keyword == "CELL_DATA" || keyword == "FIELD") {
@@ -226,6 +220,7 @@ TetMeshData read_vtk(std::string_view bytes, const std::string& name, const Read
       if (connectivity[std::size_t(j)] >= npoints)
         s.fail_at(cell_lines[c], ErrorKind::index_out_of_range,
                   "cell " + std::to_string(c) + " uses point " + std::to_string(connectivity[std::size_t(j)]) + " but there are " + std::to_string(npoints) + " points");
+  higher_order.drop_unused(mesh);
   validate_and_orient(mesh, options, name, tet_lines);
   return mesh;
 }

@@ -8,7 +8,8 @@
 //  * det[b-a, c-a, d-a] > 0 for every tet (a, b, c, d) — cmx's orientation convention — the
 //    file's own convention having been detected and normalised (see docs/formats.md).
 // Vertex indices keep the file's order (1-based formats are shifted down by one; Gmsh and TetGen
-// node tags are mapped to positions in the file's node list).
+// node tags are mapped to positions in the file's node list), except that the mid-edge nodes of
+// second-order tets are dropped (io/second_order.hpp).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -35,6 +36,9 @@ struct TetMeshData {
   // True when the reader swapped two vertices of every tet because the file listed all tets
   // negatively oriented.
   bool orientation_flipped = false;
+  // Mid-edge nodes of second-order tets that the reader dropped (io/second_order.hpp); the
+  // remaining vertices were renumbered consecutively in file order. 0 for linear meshes.
+  std::size_t dropped_higher_order_nodes = 0;
 };
 
 // What readers do with orientation.

@@ -86,6 +86,19 @@ TetMap read_tmap(const std::string& path, bool verify_orientation) {
   return parse_tmap(read_file_bytes(path), path, verify_orientation);
 }
 
+TetMeshData mesh_of_map(TetMap map, MapGeometry geometry) {
+  if (map.source.size() != map.target.size())
+    throw IoError(ErrorKind::mismatch, "tmap", 0, "source and target vertex counts differ");
+  TetMeshData mesh;
+  mesh.positions = std::move(geometry == MapGeometry::source ? map.source : map.target);
+  mesh.tets = std::move(map.tets);
+  return mesh;
+}
+
+TetMeshData read_map_as_mesh(const std::string& path, MapGeometry geometry) { return mesh_of_map(read_tmap(path), geometry); }
+
+bool is_map_path(const std::string& path) { return extension_of(path) == "tmap"; }
+
 void write_tmap(const std::string& path, const TetMap& map) {
   if (map.source.size() != map.target.size())
     throw IoError(ErrorKind::mismatch, path, 0, "source and target vertex counts differ");

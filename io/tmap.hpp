@@ -31,4 +31,18 @@ TetMap read_tmap(const std::string& path, bool verify_orientation = true);
 // (index_out_of_range) for a bad tet index. Orientation is the caller's invariant (not checked).
 void write_tmap(const std::string& path, const TetMap& map);
 
+// Which geometry of a map a mesh is made of.
+enum class MapGeometry { source, target };
+
+// The map as a mesh: its tets with the exact source or target positions (TetMeshData invariants
+// hold for a map read by read_tmap: every tet is positive in both). Throws IoError(mismatch) when
+// source and target sizes differ. Pass the map with std::move to avoid copying positions.
+TetMeshData mesh_of_map(TetMap map, MapGeometry geometry);
+// read_tmap (with its orientation checks), then mesh_of_map: how `.tmap` becomes an input of
+// commands that take a mesh (read_tet_mesh refuses .tmap, since only the caller knows which
+// geometry is wanted).
+TetMeshData read_map_as_mesh(const std::string& path, MapGeometry geometry);
+// True for a path ending in .tmap (any case).
+bool is_map_path(const std::string& path);
+
 }  // namespace cmx::io

@@ -12,6 +12,7 @@ packages=(
   libtet1.5-dev                         # TetGen's copy of Shewchuk's predicates (oracle only)
   libbenchmark-dev                      # bench/
   python3                               # independent checkers in ../shared/tools
+  zlib1g-dev python3-meshio python3-pytest  # io: zlib-compressed VTU; tests: meshio interoperability
 )
 for arg in "$@"; do
   case "$arg" in
