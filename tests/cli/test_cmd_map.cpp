@@ -379,6 +379,28 @@ TEST_CASE("cmx map --time-limit takes huge limits and inf (no limit), and reject
   }
 }
 
+TEST_CASE("cmx map names the culprit: the non-ball domain, the boundary file and its missing vertices") {
+  const Case c = make_case("grid:2,2,2", "tet");
+  const std::string pinched = bowtie_mesh();
+  for (const char* shape : {"tet", "sphere"}) {
+    const auto r = run_cmx({"map", pinched, "--shape", shape});
+    CHECK(r.exit_code == 4);
+    CHECK(r.err.find("cmx map: " + pinched + " is not a ball: ") == 0);
+  }
+  auto r = run_cmx({"map", c.mesh, "--codomain", pinched});
+  CHECK(r.exit_code == 4);  // two inputs that do not fit together
+  CHECK(r.err.find(pinched) != std::string::npos);
+  // Drop the first three lines of the boundary file: three boundary vertices lack positions.
+  std::string text = file_text(c.boundary);
+  const std::string first = text.substr(0, text.find(' '));
+  for (int i = 0; i < 3; ++i) text.erase(0, text.find('\n') + 1);
+  const std::string partial = write_temp_file(text);
+  r = run_cmx({"map", c.mesh, "--boundary", partial, "--report", c.dir + "/partial.json"});
+  CHECK(r.exit_code == 4);
+  CHECK(r.err.find("cmx map: " + partial + ": 3 boundary vertices have no prescribed position; first: vertex " + first) == 0);
+  CHECK(file_text(c.dir + "/partial.json").find("\"status\": \"boundary_mismatch\"") != std::string::npos);
+}
+
 TEST_CASE("cmx map: a domain with inverted or flat tets is not a valid problem (exit 4), a syntax error is malformed (3)") {
   const auto two_tets = [](const std::string& fifth) {
     return write_temp_file("# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
