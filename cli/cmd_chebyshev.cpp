@@ -135,7 +135,8 @@ int run(const std::vector<std::string>& args) {
   } else {
     check_readable(file);
     std::ifstream in(file);
-    if (!in || !read_halfspaces(in, halfspaces)) return exit_bad_input;
+    if (!in) throw Failure(exit_bad_input, file + ": cannot open");
+    if (!read_halfspaces(in, halfspaces)) return exit_bad_input;
   }
   try {
     print_result(lp::chebyshev_center(halfspaces, options), json);
