@@ -14,6 +14,11 @@ namespace {
 
 std::string face_text(const topology::Triangle& f) { return "boundary triangle " + ids_text(f); }
 
+// "1 boundary vertex has" / "17 boundary vertices have"
+std::string count_text(std::size_t count, const char* one, const char* many) {
+  return std::to_string(count) + " " + (count == 1 ? one : many);
+}
+
 void check_sizes(const MapProblem& p) {
   const std::size_t n = p.source.size();
   if (p.tets.empty()) throw MapError(MapErrorKind::invalid_input, "the mesh has no tetrahedra");
@@ -41,6 +46,33 @@ std::vector<lp::HalfSpace> as_lp(const std::vector<InnerHalfSpace>& hs, std::siz
 
 bool has_interior(const std::vector<InnerHalfSpace>& hs, const lp::ChebyshevOptions& lp) {
   return lp::chebyshev_center(as_lp(hs, hs.size()), lp).status == lp::ChebyshevStatus::interior;
+}
+
+// The prescribed position of every boundary vertex; positions for exactly the boundary vertices
+// (the messages count what is wrong and name the first vertex).
+void prescribe_boundary(const MapProblem& p, ValidatedProblem& v) {
+  const std::size_t n = p.source.size();
+  v.prescribed.assign(n, HPoint());
+  std::vector<char> given(n, 0);
+  std::size_t off_boundary = 0, first_off = 0;
+  for (std::size_t i = 0; i < p.boundary_vertices.size(); ++i) {
+    const auto b = p.boundary_vertices[i];
+    if (!v.boundary[b] && !off_boundary++) first_off = b;
+    given[b] = 1;
+    v.prescribed[b] = HPoint(p.boundary_positions[i][0], p.boundary_positions[i][1], p.boundary_positions[i][2]);
+    v.boundary_positions.push_back(v.prescribed[b]);
+  }
+  if (off_boundary)
+    throw MapError(MapErrorKind::boundary_mismatch,
+                   count_text(off_boundary, "position is", "positions are") +
+                       " prescribed for vertices that are not on the boundary; first: vertex " + std::to_string(first_off));
+  std::size_t missing = 0, first_missing = 0;
+  for (std::size_t b = 0; b < n; ++b)
+    if (v.boundary[b] && !given[b] && !missing++) first_missing = b;
+  if (missing)
+    throw MapError(MapErrorKind::boundary_mismatch,
+                   count_text(missing, "boundary vertex has", "boundary vertices have") +
+                       " no prescribed position; first: vertex " + std::to_string(first_missing));
 }
 
 }  // namespace
@@ -73,7 +105,7 @@ ValidatedProblem validate_problem(const MapProblem& p, const FilterPolicy& filte
     const Sign s = orient3d(v.source[x[0]], v.source[x[1]], v.source[x[2]], v.source[x[3]], filter);
     if (s != Sign::positive)
       throw MapError(MapErrorKind::source_not_positive,
-                     std::string(s == Sign::zero ? "degenerate" : "negatively oriented") + " in the source mesh",
+                     std::string(s == Sign::zero ? "flat (zero volume)" : "inverted (negatively oriented)") + " in the source mesh",
                      "tet " + std::to_string(t));
   }
 
@@ -81,21 +113,7 @@ ValidatedProblem validate_problem(const MapProblem& p, const FilterPolicy& filte
   v.boundary.assign(n, 0);
   for (const auto& f : v.boundary_faces)
     for (auto b : f.face) v.boundary[b] = 1;
-  v.prescribed.assign(n, HPoint());
-  std::vector<char> given(n, 0);
-  for (std::size_t i = 0; i < p.boundary_vertices.size(); ++i) {
-    const auto b = p.boundary_vertices[i];
-    if (!v.boundary[b])
-      throw MapError(MapErrorKind::boundary_mismatch, "a position is prescribed but the vertex is not on the boundary",
-                     "vertex " + std::to_string(b));
-    given[b] = 1;
-    v.prescribed[b] = HPoint(p.boundary_positions[i][0], p.boundary_positions[i][1], p.boundary_positions[i][2]);
-    v.boundary_positions.push_back(v.prescribed[b]);
-  }
-  for (std::size_t b = 0; b < n; ++b)
-    if (v.boundary[b] && !given[b])
-      throw MapError(MapErrorKind::boundary_mismatch, "boundary vertex without a prescribed position",
-                     "vertex " + std::to_string(b));
+  prescribe_boundary(p, v);
 
   for (const auto& f : v.boundary_faces) {
     InnerHalfSpace h = inner_halfspace(v.prescribed[f.face[0]], v.prescribed[f.face[1]], v.prescribed[f.face[2]]);

@@ -3,54 +3,56 @@
 // exactly and normalised to det[b-a, c-a, d-a] > 0 (a mixed-orientation or degenerate input is an
 // error unless --keep-orientation). Display formats get the nearest doubles (17 digits); OVM
 // additionally keeps exact positions in "str_exact_position". The output is written atomically.
-// Exit: 0 done, 2 usage, 3 read or write error ("file:line: message").
-#include <cstdio>
+#include <string>
+#include <vector>
 
 #include "cli/command.hpp"
-#include "io/io_error.hpp"
+#include "cli/command_line.hpp"
+#include "cli/files.hpp"
+#include "cli/mesh_input.hpp"
+#include "cli/messages.hpp"
 #include "io/read_mesh.hpp"
 #include "io/write_mesh.hpp"
 
 namespace cmx::cli {
 namespace {
 
-constexpr const char* usage =
-    "usage: cmx convert IN OUT [--keep-orientation]\n"
+const HelpText help = {
+    "usage: cmx convert IN OUT [--keep-orientation]\n",
     "Converts a tetrahedral mesh by file extension. IN: .ovm .vtk .vtu .mesh .msh .node/.ele;\n"
     "OUT: .ovm .vtu .vtk .mesh .msh. Tets are normalised to det[b-a, c-a, d-a] > 0 unless\n"
-    "--keep-orientation (then written as read, without checks).\n";
+    "--keep-orientation (then written as read, without checks). Display formats get the nearest\n"
+    "doubles; .ovm also keeps the exact positions. OUT is written atomically: on any failure an\n"
+    "existing OUT is left as it was.\n",
+    "Exit status: 0 written; 2 bad command line (also: OUT is IN); 3 unreadable or malformed IN;\n"
+    "4 IN has inverted or flat tets (without --keep-orientation); 9 OUT cannot be written.\n"};
+
+struct ConvertArgs {
+  std::string in, out;
+  io::ReadOptions read;
+};
+
+// The files convert writes for OUT.
+std::vector<std::string> output_files(const ConvertArgs& a) { return mesh_files(a.out); }
+
+void write_output(const ConvertArgs& a, const io::TetMeshData& mesh) { io::write_tet_mesh(a.out, mesh); }
 
 int run(const std::vector<std::string>& args) {
-  std::vector<std::string> paths;
-  io::ReadOptions options;
-  for (const auto& a : args) {
-    if (a == "--help" || a == "-h") {
-      std::fputs(usage, stdout);
-      return exit_ok;
-    }
-    if (a == "--keep-orientation") options.orientation = io::Orientation::keep;
-    else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "cmx convert: unknown option '%s'\n%s", a.c_str(), usage);
-      return exit_usage;
-    } else paths.push_back(a);
-  }
-  if (paths.size() != 2) {
-    std::fputs(usage, stderr);
-    return exit_usage;
-  }
-  if (!io::is_writable_mesh_path(paths[1])) {
-    std::fprintf(stderr, "cmx convert: cannot write '%s': unknown output format\n%s", paths[1].c_str(), usage);
-    return exit_usage;
-  }
-  try {
-    const auto mesh = io::read_tet_mesh(paths[0], options);
-    io::write_tet_mesh(paths[1], mesh);
-    std::fprintf(stderr, "wrote %s: %zu vertices, %zu tets%s\n", paths[1].c_str(), mesh.positions.size(), mesh.tets.size(),
-                 mesh.orientation_flipped ? " (input listed tets negatively: reoriented)" : "");
-  } catch (const io::IoError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return exit_bad_input;
-  }
+  ConvertArgs a;
+  CommandLine line("convert", help);
+  CLI::App& app = line.app();
+  app.add_option("IN", a.in, "the mesh to read")->required()->type_name("");
+  app.add_option("OUT", a.out, "the mesh to write; its extension chooses the format")->required()->type_name("");
+  app.add_flag_callback("--keep-orientation", [&a] { a.read.orientation = io::Orientation::keep; },
+                        "write the tets as read, without orientation checks");
+  if (const auto done = line.parse(args)) return *done;
+  if (!io::is_writable_mesh_path(a.out)) usage_error("cannot write '" + a.out + "': unknown output format");
+  check_outputs_apart(output_files(a), mesh_files(a.in));
+  check_writable(output_files(a));
+  const io::TetMeshData mesh = read_mesh(a.in, a.read);
+  write_output(a, mesh);
+  note("wrote " + a.out + ": " + std::to_string(mesh.positions.size()) + " vertices, " + std::to_string(mesh.tets.size()) +
+       " tets" + (mesh.orientation_flipped ? " (input listed tets negatively: reoriented)" : ""));
   return exit_ok;
 }
 

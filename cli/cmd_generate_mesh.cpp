@@ -10,11 +10,8 @@
 // keeping only offsets after which all its tets stay strictly positive (exact). OUT's extension
 // picks the format (io::write_tet_mesh): .ovm keeps the exact positions (as "str_exact_position";
 // they are doubles anyway unless A has a long mantissa), .vtk .vtu .mesh .msh get the nearest
-// doubles. Written atomically. Exit: 0 written; 2 bad command line; 3 write error.
+// doubles. Written atomically. Exit: 0 written; 2 bad command line; 9 OUT cannot be written.
 #include <charconv>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -23,33 +20,22 @@
 
 #include "algorithm/domain_generators.hpp"
 #include "cli/command.hpp"
-#include "io/io_error.hpp"
+#include "cli/command_line.hpp"
+#include "cli/files.hpp"
+#include "cli/messages.hpp"
+#include "cli/option_values.hpp"
 #include "io/write_mesh.hpp"
 
 namespace cmx::cli {
 namespace {
 
-constexpr const char* usage =
-    "usage: cmx generate-mesh --shape SHAPE [--perturb SEED] [--amplitude A] -o OUT\n"
-    "Writes a ball-topology test mesh with all tets positively oriented.\n"
-    "  --shape SHAPE   grid:NX,NY,NZ (Freudenthal grid of unit cells), ball:R (voxelised ball of\n"
-    "                  radius R cells), slab:NX,NY[,LAYERS] (1 or 2 layers of cells),\n"
-    "                  bings-house[:S] (a ball whose interior is Bing's house, S even in [4,64],\n"
-    "                  default 4), knotted-hole (Furch's knotted hole); the last two get stuck\n"
-    "                  in a NOBUENOSS under plain greedy expansion\n"
-    "  --perturb SEED  jitter every vertex (seeded, dyadic offsets, kept only when its tets stay\n"
-    "                  positive); without it the vertices are integer points\n"
-    "  --amplitude A   largest jitter per axis, in cells (default 0.25)\n"
-    "  -o, --output    OUT: .ovm (exact positions kept) .vtk .vtu .mesh .msh\n"
-    "Exit status: 0 written; 2 bad command line; 3 write error.\n";
+const HelpText help = {
+    "usage: cmx generate-mesh --shape SHAPE [--perturb SEED] [--amplitude A] -o OUT\n",
+    "Writes a ball-topology test mesh with all tets positively oriented (written atomically).\n",
+    "Exit status: 0 written; 2 bad command line; 9 OUT cannot be written.\n"};
 
 // Meshes beyond this many cells are refused: exact positions cost about 200 bytes per vertex.
 constexpr std::uint64_t max_cells = 2'000'000;
-
-int usage_error(const std::string& message) {
-  std::fprintf(stderr, "cmx generate-mesh: %s\n%s", message.c_str(), usage);
-  return exit_usage;
-}
 
 // "a,b,c" -> numbers (each a decimal integer in [1, 2^32)); nullopt on anything else.
 std::optional<std::vector<std::uint32_t>> parse_dimensions(std::string_view text) {
@@ -96,66 +82,79 @@ std::uint64_t cell_count(const ShapeRequest& s) {
   return cells * (d.size() == 3 ? d[2] : 1);
 }
 
-int run(const std::vector<std::string>& args) {
-  std::string shape_text, output, seed_text, amplitude_text;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      std::fputs(usage, stdout);
-      return exit_ok;
-    }
-    std::string* value = a == "--shape" ? &shape_text
-                         : (a == "-o" || a == "--output") ? &output
-                         : a == "--perturb"               ? &seed_text
-                         : a == "--amplitude"             ? &amplitude_text
-                                                          : nullptr;
-    if (!value) return usage_error("unexpected argument '" + a + "'");
-    if (i + 1 == args.size()) return usage_error(a + " needs a value");
-    *value = args[++i];
-  }
-  if (shape_text.empty() || output.empty()) return usage_error("--shape and -o are required");
-  const auto shape = parse_shape(shape_text);
-  if (!shape) return usage_error("bad shape '" + shape_text + "' (grid:NX,NY,NZ, ball:R, slab:NX,NY[,1|2], bings-house[:S] or knotted-hole)");
-  if (cell_count(*shape) > max_cells)
-    return usage_error("'" + shape_text + "' has more than " + std::to_string(max_cells) + " cells");
-  if (!io::is_writable_mesh_path(output)) return usage_error("cannot write '" + output + "': unknown format");
-  std::uint64_t seed = 0;
-  double amplitude = 0;
-  if (!seed_text.empty()) {
-    const auto [end, ec] = std::from_chars(seed_text.data(), seed_text.data() + seed_text.size(), seed);
-    if (ec != std::errc() || end != seed_text.data() + seed_text.size())
-      return usage_error("--perturb needs a non-negative integer below 2^64, not '" + seed_text + "'");
-    amplitude = algorithm::default_perturb_amplitude;
-  }
-  if (!amplitude_text.empty()) {
-    if (seed_text.empty()) return usage_error("--amplitude needs --perturb SEED");
-    char* end = nullptr;
-    amplitude = std::strtod(amplitude_text.c_str(), &end);
-    if (end != amplitude_text.c_str() + amplitude_text.size() || !std::isfinite(amplitude) || amplitude < 0)
-      return usage_error("--amplitude needs a finite number >= 0, not '" + amplitude_text + "'");
-  }
+struct GenerateArgs {
+  ShapeRequest shape;
+  std::string shape_text, output;
+  std::optional<std::uint64_t> seed;
+  std::optional<double> amplitude;
+};
 
-  algorithm::GeneratedDomain domain;
+void add_options(CLI::App& app, GenerateArgs& a) {
+  const auto shape = [&a](const std::string& text) {
+    const auto s = parse_shape(text);
+    if (!s)
+      throw std::invalid_argument("bad shape '" + text +
+                                  "' (grid:NX,NY,NZ, ball:R, slab:NX,NY[,1|2], bings-house[:S] or knotted-hole)");
+    if (cell_count(*s) > max_cells) throw std::invalid_argument("'" + text + "' has more than " + std::to_string(max_cells) + " cells");
+    a.shape_text = text;
+    return *s;
+  };
+  add_parsed(app, "--shape", a.shape, shape,
+             "grid:NX,NY,NZ (Freudenthal grid of unit cells), ball:R (voxelised ball\n"
+             "of radius R cells), slab:NX,NY[,LAYERS] (1 or 2 layers of cells),\n"
+             "bings-house[:S] (a ball whose interior is Bing's house, S even in\n"
+             "[4,64], default 4), knotted-hole (Furch's knotted hole); the last two\n"
+             "get stuck in a NOBUENOSS under plain greedy expansion; at most\n"
+             "2000000 cells")
+      ->type_name("SHAPE")
+      ->required();
+  add_parsed(app, "--perturb", a.seed, [](const std::string& t) { return std::optional(parse_seed(t)); },
+             "jitter every vertex (seeded, dyadic offsets, kept only when its tets\n"
+             "stay positive); without it the vertices are integer points; 0 to 2^64-1")
+      ->type_name("SEED");
+  add_parsed(app, "--amplitude", a.amplitude, [](const std::string& t) { return std::optional(parse_nonnegative(t)); },
+             "largest jitter per axis, in cells (default 0.25; needs --perturb)")
+      ->type_name("A");
+  const auto output = [](const std::string& text) {
+    if (!io::is_writable_mesh_path(text)) throw std::invalid_argument("cannot write '" + text + "': unknown format");
+    return text;
+  };
+  add_parsed(app, "-o,--output", a.output, output, ".ovm (exact positions kept) .vtk .vtu .mesh .msh")
+      ->type_name("OUT")
+      ->required();
+}
+
+algorithm::GeneratedDomain generate(const GenerateArgs& a) {
+  const std::uint64_t seed = a.seed.value_or(0);
+  const double amplitude = a.seed ? a.amplitude.value_or(algorithm::default_perturb_amplitude) : 0;
+  const auto& d = a.shape.dims;
   try {
-    const auto& d = shape->dims;
-    if (shape->kind == 'g') domain = algorithm::perturbed_grid(d[0], d[1], d[2], seed, amplitude);
-    else if (shape->kind == 'b') domain = algorithm::voxel_ball(d[0], seed, amplitude);
-    else if (shape->kind == 'h') domain = algorithm::bings_house(d[0], seed, amplitude);
-    else if (shape->kind == 'k') domain = algorithm::knotted_hole(seed, amplitude);
-    else domain = algorithm::thin_slab(d[0], d[1], seed, d.size() == 3 ? d[2] : 1, amplitude);
+    switch (a.shape.kind) {
+      case 'g': return algorithm::perturbed_grid(d[0], d[1], d[2], seed, amplitude);
+      case 'b': return algorithm::voxel_ball(d[0], seed, amplitude);
+      case 'h': return algorithm::bings_house(d[0], seed, amplitude);
+      case 'k': return algorithm::knotted_hole(seed, amplitude);
+      default: return algorithm::thin_slab(d[0], d[1], seed, d.size() == 3 ? d[2] : 1, amplitude);
+    }
   } catch (const std::invalid_argument& e) {
-    return usage_error(e.what());
+    usage_error(e.what());
   }
+}
+
+int run(const std::vector<std::string>& args) {
+  GenerateArgs a;
+  CommandLine line("generate-mesh", help);
+  add_options(line.app(), a);
+  if (const auto done = line.parse(args)) return *done;
+  if (a.amplitude && !a.seed) usage_error("--amplitude needs --perturb SEED");
+  check_writable({a.output});
+  algorithm::GeneratedDomain domain = generate(a);
   io::TetMeshData data;
   data.positions = std::move(domain.positions);
   for (auto t : domain.mesh.live_tets()) data.tets.push_back(domain.mesh.tet(t));
-  try {
-    io::write_tet_mesh(output, data);
-  } catch (const io::IoError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return exit_bad_input;
-  }
-  std::fprintf(stderr, "wrote %s: %zu vertices, %zu tets\n", output.c_str(), data.positions.size(), data.tets.size());
+  io::write_tet_mesh(a.output, data);
+  note("wrote " + a.output + ": " + std::to_string(data.positions.size()) + " vertices, " + std::to_string(data.tets.size()) +
+       " tets");
   return exit_ok;
 }
 

@@ -17,22 +17,24 @@
 #include "arith/rational.hpp"
 #include "arith/rounding.hpp"
 #include "cli/command.hpp"
+#include "cli/command_line.hpp"
+#include "cli/common_options.hpp"
+#include "cli/files.hpp"
+#include "cli/messages.hpp"
 #include "kernel/orient.hpp"
 
 namespace cmx::cli {
 namespace {
 
-constexpr const char* usage =
+const HelpText help = {
     "usage: cmx orient3d [--filter NAME] [--stats] [FILE | -]\n"
-    "       cmx orient3d --demo\n"
+    "       cmx orient3d --demo\n",
     "Reads lines of 12 exact numbers (four points a b c d) from FILE or stdin and prints\n"
     "'+', '-' or '0' per line: the sign of det[b-a, c-a, d-a]. Blank lines and '#' comments are\n"
     "skipped; a malformed line gets 'line N: reason' on stderr and no output, and the exit\n"
-    "status is then 3.\n"
-    "  --filter NAME  cascade (default), interval, exact, mpfr:BITS, naive (plain doubles:\n"
-    "                 wrong near degeneracies, for demonstrations)\n"
-    "  --stats        print how many signs each filter tier decided to stderr\n"
-    "  --demo         a near-degenerate case that plain doubles get wrong: naive vs exact\n";
+    "status is then 3.\n",
+    "Exit status: 0 every line answered; 2 bad command line; 3 a malformed line or an unreadable\n"
+    "FILE; 10 internal error (the demo's exact signs disagree).\n"};
 
 // Kettner, Mehlhorn, Pion, Schirra, Yap, "Classroom examples of robustness problems in geometric
 // computations" (2004), witness B1: the naive orientation of (p3, p1, p4) is wrong. Lifted to 3D
@@ -58,7 +60,7 @@ int run_demo() {
   std::printf("  exact cascade: %c   (decided by the %s)\n", sign_char(exact),
               stats.semi_static ? "semi-static filter" : "adaptive expansion stages");
   if (exact != reference) {
-    std::fprintf(stderr, "cmx orient3d: internal error: cascade and exact disagree\n");
+    message("internal error: cascade and exact disagree");
     return exit_internal;
   }
   return exit_ok;
@@ -80,7 +82,7 @@ int answer_lines(std::istream& in, const FilterPolicy& policy, bool show_stats) 
     const std::vector<std::string> t = tokens(line);
     if (t.empty()) continue;
     if (t.size() != 12) {
-      std::fprintf(stderr, "line %ld: expected 12 numbers, got %zu\n", number, t.size());
+      message("line " + std::to_string(number) + ": expected 12 numbers, got " + std::to_string(t.size()));
       bad = true;
       continue;
     }
@@ -90,7 +92,7 @@ int answer_lines(std::istream& in, const FilterPolicy& policy, bool show_stats) 
       if (auto v = parse_rational(t[i], &why)) {
         q[i] = *v;
       } else {
-        std::fprintf(stderr, "line %ld: number %d: %s\n", number, i + 1, why.c_str());
+        message("line " + std::to_string(number) + ": number " + std::to_string(i + 1) + ": " + why);
         ok = false;
       }
     }
@@ -105,7 +107,7 @@ int answer_lines(std::istream& in, const FilterPolicy& policy, bool show_stats) 
   std::fflush(stdout);
   if (show_stats) std::fprintf(stderr, "%s", stats.report().c_str());
   if (in.bad()) {
-    std::fprintf(stderr, "cmx orient3d: read error\n");
+    message("read error");
     return exit_bad_input;
   }
   return bad ? exit_bad_input : exit_ok;
@@ -115,50 +117,21 @@ int run(const std::vector<std::string>& args) {
   FilterPolicy policy;
   bool show_stats = false, demo = false;
   std::string file;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      std::printf("%s", usage);
-      return exit_ok;
-    } else if (a == "--demo") {
-      demo = true;
-    } else if (a == "--stats") {
-      show_stats = true;
-    } else if (a == "--filter" || a.rfind("--filter=", 0) == 0) {
-      std::string name;
-      if (a == "--filter") {
-        if (i + 1 == args.size()) {
-          std::fprintf(stderr, "cmx orient3d: --filter needs a name\n%s", usage);
-          return exit_usage;
-        }
-        name = args[++i];
-      } else {
-        name = a.substr(9);
-      }
-      std::string why;
-      const auto p = parse_filter_policy(name, &why);
-      if (!p) {
-        std::fprintf(stderr, "cmx orient3d: %s\n", why.c_str());
-        return exit_usage;
-      }
-      policy = *p;
-    } else if (a.size() > 1 && a[0] == '-') {
-      std::fprintf(stderr, "cmx orient3d: unknown option '%s'\n%s", a.c_str(), usage);
-      return exit_usage;
-    } else if (!file.empty()) {
-      std::fprintf(stderr, "cmx orient3d: more than one input file\n%s", usage);
-      return exit_usage;
-    } else {
-      file = a;
-    }
-  }
+  CommandLine line("orient3d", help);
+  CLI::App& app = line.app();
+  app.add_option("FILE", file, "the input (stdin when absent or -)")->type_name("");
+  add_filter_option(app, policy, true,
+                    "cascade (default), interval, exact, mpfr:BITS, naive (plain doubles:\n"
+                    "wrong near degeneracies, for demonstrations)");
+  app.add_flag("--stats", show_stats, "print how many signs each filter tier decided to stderr");
+  app.add_flag("--demo", demo, "a near-degenerate case that plain doubles get wrong: naive vs exact");
+  line.quiet_flag()->description("accepted for uniformity: orient3d prints only its results");
+  if (const auto done = line.parse(args)) return *done;
   if (demo) return run_demo();
   if (file.empty() || file == "-") return answer_lines(std::cin, policy, show_stats);
+  check_readable(file);
   std::ifstream in(file);
-  if (!in) {
-    std::fprintf(stderr, "cmx orient3d: cannot open '%s'\n", file.c_str());
-    return exit_bad_input;
-  }
+  if (!in) throw Failure(exit_bad_input, file + ": cannot open");
   return answer_lines(in, policy, show_stats);
 }
 

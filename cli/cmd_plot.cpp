@@ -1,7 +1,7 @@
 // cmx plot T.csv -o T.svg: draws a `cmx map --trace` file: coordinate bits over the run (largest,
 // mean, and each new position's) and refinement (vertices added so far, degenerate tets left).
-// Exit: 0 written; 2 bad command line; 3 unreadable or malformed trace (file:line named) or write
-// error. Written atomically: a failure leaves no file (an existing one untouched).
+// Exit: 0 written; 2 bad command line; 3 unreadable or malformed trace (file:line named); 9 the SVG
+// cannot be written. Written atomically: a failure leaves no file (an existing one untouched).
 #include <charconv>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +11,9 @@
 #include <vector>
 
 #include "cli/command.hpp"
+#include "cli/command_line.hpp"
+#include "cli/files.hpp"
+#include "cli/messages.hpp"
 #include "cli/plot_svg.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
@@ -18,11 +21,12 @@
 namespace cmx::cli {
 namespace {
 
-constexpr const char* usage =
-    "usage: cmx plot TRACE.csv -o OUT.svg [--title TEXT]\n"
+const HelpText help = {
+    "usage: cmx plot TRACE.csv -o OUT.svg [--title TEXT]\n",
     "Draws a `cmx map --trace` file as an SVG chart: coordinate bits over the expansions (largest,\n"
-    "mean, and each new position's) and refinement (vertices added so far, degenerate tets left).\n"
-    "Exit status: 0 written; 2 bad command line; 3 unreadable or malformed trace, or write error.\n";
+    "mean, and each new position's) and refinement (vertices added so far, degenerate tets left).\n",
+    "Exit status: 0 written; 2 bad command line (also: OUT.svg is TRACE.csv); 3 unreadable or\n"
+    "malformed trace; 9 OUT.svg cannot be written.\n"};
 
 struct Trace {
   std::vector<double> step, bits, max_bits, mean_bits, added, degenerate;
@@ -38,6 +42,7 @@ std::vector<std::string> split_csv(const std::string& line) {
 
 // Throws io::IoError naming file:line on anything malformed.
 Trace read_trace(const std::string& path) {
+  check_readable(path);
   std::ifstream in(path);
   if (!in) throw io::IoError(io::ErrorKind::open_failed, path, 0, "cannot open the trace file");
   std::string line;
@@ -79,43 +84,37 @@ Trace read_trace(const std::string& path) {
   return t;
 }
 
+std::string chart(const Trace& t, const std::string& title) {
+  Panel bits{"coordinate bits", "bits", "", {}};
+  bits.series.push_back({"new position", "#9a9a9a", t.bits, true, false});
+  bits.series.push_back({"largest so far", "#c0392b", t.max_bits, false, false});
+  bits.series.push_back({"mean so far", "#2471a3", t.mean_bits, false, false});
+  Panel refinement{"refinement", "vertices added", "degenerate tets left", {}};
+  refinement.series.push_back({"vertices added", "#1e8449", t.added, false, false});
+  refinement.series.push_back({"degenerate tets left", "#d68910", t.degenerate, false, true});
+  return svg_chart(title, "expansion", t.step, {bits, refinement});
+}
+
 int run(const std::vector<std::string>& args) {
   std::string input, output, title;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      std::fputs(usage, stdout);
-      return exit_ok;
-    }
-    if ((a == "-o" || a == "--output" || a == "--title") && i + 1 < args.size()) {
-      (a == "--title" ? title : output) = args[++i];
-    } else if (!a.empty() && a[0] != '-' && input.empty()) {
-      input = a;
-    } else {
-      std::fprintf(stderr, "cmx plot: unexpected argument '%s'\n%s", a.c_str(), usage);
-      return exit_usage;
-    }
-  }
-  if (input.empty() || output.empty()) {
-    std::fprintf(stderr, "cmx plot: needs a trace file and -o OUT.svg\n%s", usage);
-    return exit_usage;
-  }
+  CommandLine line("plot", help);
+  CLI::App& app = line.app();
+  app.add_option("TRACE", input, "the trace of `cmx map --trace T.csv`")->required()->type_name("");
+  app.add_option("-o,--output", output, "the SVG to write (atomically)")->required()->type_name("OUT.svg");
+  app.add_option("--title", title, "the chart's title (default: the trace's path)")->type_name("TEXT");
+  line.quiet_flag()->description("do not say what was written");
+  if (const auto done = line.parse(args)) return *done;
+  check_outputs_apart({output}, {input});
+  check_writable({output});
+  Trace t;
   try {
-    const Trace t = read_trace(input);
-    Panel bits{"coordinate bits", "bits", "", {}};
-    bits.series.push_back({"new position", "#9a9a9a", t.bits, true, false});
-    bits.series.push_back({"largest so far", "#c0392b", t.max_bits, false, false});
-    bits.series.push_back({"mean so far", "#2471a3", t.mean_bits, false, false});
-    Panel refinement{"refinement", "vertices added", "degenerate tets left", {}};
-    refinement.series.push_back({"vertices added", "#1e8449", t.added, false, false});
-    refinement.series.push_back({"degenerate tets left", "#d68910", t.degenerate, false, true});
-    const std::string svg = svg_chart(title.empty() ? input : title, "expansion", t.step, {bits, refinement});
-    io::write_file_atomically(output, [&](std::ostream& os) { os << svg; });
-    std::printf("wrote %s: %zu expansions\n", output.c_str(), t.step.size());
+    t = read_trace(input);
   } catch (const io::IoError& e) {
-    std::fprintf(stderr, "cmx plot: %s\n", e.what());
-    return exit_bad_input;
+    throw Failure(exit_bad_input, e.what());
   }
+  const std::string svg = chart(t, title.empty() ? input : title);
+  io::write_file_atomically(output, [&](std::ostream& os) { os << svg; });
+  if (!quiet()) std::printf("wrote %s: %zu expansions\n", output.c_str(), t.step.size());
   return exit_ok;
 }
 

@@ -21,8 +21,11 @@
 #include <vector>
 
 #include "cli/command.hpp"
-#include "io/io_error.hpp"
-#include "io/read_mesh.hpp"
+#include "cli/command_line.hpp"
+#include "cli/common_options.hpp"
+#include "cli/json.hpp"
+#include "cli/mesh_input.hpp"
+#include "cmx_version.hpp"
 #include "topology/ball_check.hpp"
 #include "topology/chords.hpp"
 #include "topology/complex_queries.hpp"
@@ -36,25 +39,14 @@ namespace {
 
 using topology::TetMesh;
 
-constexpr const char* usage =
-    "usage: cmx topo-expand (MESH | --builtin NAME) [--order ORDER] [--raw] [--json]\n"
+const HelpText help = {
+    "usage: cmx topo-expand (MESH | --builtin NAME) [--order ORDER] [--raw] [--json]\n",
     "Topological expansion (paper Sec. 5.1): expands the cluster mesh of the interior vertices\n"
     "greedily by Eq. (1) alone (no geometry) and reports the sequence length, the expansions by\n"
     "kind (k-manifold k = 1, 2, 3, other Eq. (1), automatic), whether it got stuck, and when stuck\n"
-    "the remaining cluster mesh (vertices, Euler characteristic, connected components).\n"
-    "  MESH            .ovm .vtk .vtu .mesh .msh .node/.ele; must be a ball (tets consistently\n"
-    "                  oriented across faces; geometric signs are not computed: see cmx info)\n"
-    "  --builtin NAME  a complex built in memory instead of MESH: knotted-hole (Furch's ball with\n"
-    "                  a knotted hole: gets stuck), unknotted-hole (its control), bings-house,\n"
-    "                  grid:NX,NY,NZ (Freudenthal grid of NX*NY*NZ cells, 6 tets each)\n"
-    "  --order ORDER   priority (default: k = 1, 2, 3, other; then more expanded neighbours;\n"
-    "                  then lower id), index (lowest id), random:SEED (seeded permutation)\n"
-    "  --raw           skip the chord splits that first make the interior mesh simply connected\n"
-    "                  (by default chords are split as cmx map does: only those that disconnect\n"
-    "                  the interior or are axes of its handles, then every chord if needed)\n"
-    "  --json          one JSON object on stdout\n"
+    "the remaining cluster mesh (vertices, Euler characteristic, connected components).\n",
     "Exit status: 0 when the expansion ran, stuck or not (stuck is a result, not an error);\n"
-    "2 bad command line; 3 unreadable or malformed MESH; 4 MESH is not a ball.\n";
+    "2 bad command line; 3 unreadable or malformed MESH; 4 MESH is not a ball.\n"};
 
 // Freudenthal grids larger than this are refused (6 tets per cell; vertex ids are 32-bit).
 constexpr std::uint64_t max_builtin_tets = 100'000'000;
@@ -99,38 +91,17 @@ std::optional<std::array<std::uint32_t, 3>> parse_grid_size(const std::string& t
   return n;
 }
 
-// The complex named by --builtin, or nullopt (with a message) when the name is unknown.
-std::optional<TetMesh> builtin_mesh(const std::string& name) {
+// The complex named by --builtin; an unknown name is a bad command line.
+TetMesh builtin_mesh(const std::string& name) {
   if (name == "knotted-hole") return topology::knotted_hole_ball().mesh;
   if (name == "unknotted-hole") return topology::unknotted_hole_ball().mesh;
   if (name == "bings-house") return topology::bings_house_nobuenoss().mesh;
   if (name.rfind("grid:", 0) == 0) {
     if (const auto n = parse_grid_size(name.substr(5))) return topology::grid_complex((*n)[0], (*n)[1], (*n)[2]).mesh;
-    std::fprintf(stderr, "cmx topo-expand: bad grid size '%s' (want grid:NX,NY,NZ, positive, at most %llu tets)\n",
-                 name.c_str(), static_cast<unsigned long long>(max_builtin_tets));
-    return std::nullopt;
+    usage_error("--builtin: bad grid size '" + name + "' (want grid:NX,NY,NZ, positive, at most " +
+                std::to_string(max_builtin_tets) + " tets)");
   }
-  std::fprintf(stderr, "cmx topo-expand: unknown builtin '%s' (knotted-hole, unknotted-hole, bings-house, grid:NX,NY,NZ)\n",
-               name.c_str());
-  return std::nullopt;
-}
-
-std::string json_escaped(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char code[8];
-      std::snprintf(code, sizeof code, "\\u%04x", unsigned(static_cast<unsigned char>(c)));
-      out += code;
-    } else {
-      out += c;
-    }
-  }
-  out += '"';
-  return out;
+  usage_error("--builtin: unknown builtin '" + name + "' (knotted-hole, unknotted-hole, bings-house, grid:NX,NY,NZ)");
 }
 
 void print_report(const Input& in, const topology::ExpansionOrder& order, const topology::TopologicalExpansionResult& r,
@@ -138,8 +109,9 @@ void print_report(const Input& in, const topology::ExpansionOrder& order, const 
   const auto& k = r.k_manifold_counts;
   const std::string order_name = topology::to_string(order);
   if (json) {
-    std::printf("{\"source\": %s, \"vertices\": %zu, \"tets\": %zu, \"order\": %s,\n", json_escaped(in.source).c_str(),
-                in.mesh.num_vertices(), in.mesh.num_tets(), json_escaped(order_name).c_str());
+    std::printf("{\"cmx_version\": %s, \"source\": %s, \"vertices\": %zu, \"tets\": %zu, \"order\": %s,\n",
+                json_quote(cmx_version).c_str(), json_quote(in.source).c_str(),
+                in.mesh.num_vertices(), in.mesh.num_tets(), json_quote(order_name).c_str());
     std::printf(" \"chord_splits\": %zu, \"initial_cluster_vertices\": %zu, \"sequence_length\": %zu,\n", in.chord_splits,
                 r.initial_cluster_vertices, r.length());
     std::printf(" \"k_manifold\": {\"1\": %zu, \"2\": %zu, \"3\": %zu, \"other\": %zu}, \"automatic\": %zu,\n", k[1], k[2], k[3],
@@ -164,85 +136,57 @@ void print_report(const Input& in, const topology::ExpansionOrder& order, const 
   std::printf("time: %.3f s (expansion)\n", seconds);
 }
 
-int run(const std::vector<std::string>& args) {
-  std::string path, builtin, order_text = "priority";
-  bool json = false, raw = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    // "--name VALUE" or "--name=VALUE"
-    const auto value_of = [&](const std::string& name, std::string& value) -> std::optional<bool> {
-      if (a.rfind(name + "=", 0) == 0) {
-        value = a.substr(name.size() + 1);
-        return true;
-      }
-      if (a != name) return std::nullopt;
-      if (i + 1 == args.size()) {
-        std::fprintf(stderr, "cmx topo-expand: %s needs a value\n%s", name.c_str(), usage);
-        return false;
-      }
-      value = args[++i];
-      return true;
-    };
-    if (a == "--help" || a == "-h") {
-      std::fputs(usage, stdout);
-      return exit_ok;
-    }
-    if (a == "--json") {
-      json = true;
-    } else if (a == "--raw") {
-      raw = true;
-    } else if (const auto got = value_of("--order", order_text)) {
-      if (!*got) return exit_usage;
-    } else if (const auto got_builtin = value_of("--builtin", builtin)) {
-      if (!*got_builtin) return exit_usage;
-    } else if (!a.empty() && a[0] == '-') {
-      std::fprintf(stderr, "cmx topo-expand: unknown option '%s'\n%s", a.c_str(), usage);
-      return exit_usage;
-    } else if (path.empty()) {
-      path = a;
-    } else {
-      std::fprintf(stderr, "cmx topo-expand: more than one MESH given\n%s", usage);
-      return exit_usage;
-    }
-  }
-  const auto order = topology::parse_expansion_order(order_text);
-  if (!order) {
-    std::fprintf(stderr, "cmx topo-expand: unknown order '%s' (priority, index or random:SEED)\n", order_text.c_str());
-    return exit_usage;
-  }
-  if (path.empty() == builtin.empty()) {
-    std::fprintf(stderr, "cmx topo-expand: give either MESH or --builtin NAME\n%s", usage);
-    return exit_usage;
-  }
-
+Input read_input(const std::string& path, const std::string& builtin) {
   Input in;
   if (!builtin.empty()) {
-    auto mesh = builtin_mesh(builtin);
-    if (!mesh) return exit_usage;
-    in.mesh = std::move(*mesh);
+    in.mesh = builtin_mesh(builtin);
     in.source = "builtin:" + builtin;
-  } else {
-    try {
-      io::ReadOptions keep;
-      keep.orientation = io::Orientation::keep;
-      const io::TetMeshData data = io::read_tet_mesh(path, keep);
-      in.mesh = TetMesh(data.positions.size(), data.tets);
-    } catch (const io::IoError& e) {
-      std::fprintf(stderr, "%s\n", e.what());
-      return exit_bad_input;
-    }
-    in.source = path;
+    return in;
   }
+  io::ReadOptions keep;
+  keep.orientation = io::Orientation::keep;
+  const io::TetMeshData data = read_mesh(path, keep);
+  in.mesh = TetMesh(data.positions.size(), data.tets);
+  in.source = path;
+  return in;
+}
+
+int run(const std::vector<std::string>& args) {
+  std::string path, builtin;
+  topology::ExpansionOrder order = *topology::parse_expansion_order("priority");
+  bool json = false, raw = false;
+  CommandLine line("topo-expand", help);
+  CLI::App& app = line.app();
+  app.add_option("MESH", path,
+                 ".ovm .vtk .vtu .mesh .msh .node/.ele; must be a ball (tets consistently\n"
+                 "oriented across faces; geometric signs are not computed: see cmx info)")
+      ->type_name("");
+  app.add_option("--builtin", builtin,
+                 "a complex built in memory instead of MESH: knotted-hole (Furch's ball\n"
+                 "with a knotted hole: gets stuck), unknotted-hole (its control),\n"
+                 "bings-house, grid:NX,NY,NZ (Freudenthal grid of NX*NY*NZ cells, 6 tets\n"
+                 "each)")
+      ->type_name("NAME");
+  add_order_option(app, order,
+                   "priority (default: k = 1, 2, 3, other; then more expanded neighbours;\n"
+                   "then lower id), index (lowest id), random:SEED (seeded permutation)");
+  app.add_flag("--raw", raw,
+               "skip the chord splits that first make the interior mesh simply\n"
+               "connected (by default chords are split as cmx map does: only those\n"
+               "that disconnect the interior or are axes of its handles, then every\n"
+               "chord if needed)");
+  app.add_flag("--json", json, "one JSON object on stdout (with cmx_version)");
+  line.quiet_flag()->description("accepted for uniformity: topo-expand prints only its results");
+  if (const auto done = line.parse(args)) return *done;
+  if (path.empty() == builtin.empty()) usage_error("give either MESH or --builtin NAME");
+  Input in = read_input(path, builtin);
   const topology::BallVerdict ball = topology::check_ball(in.mesh);
-  if (!ball.ok) {
-    std::fprintf(stderr, "cmx topo-expand: %s is not a ball: %s\n", in.source.c_str(), ball.message.c_str());
-    return exit_invalid_problem;
-  }
+  if (!ball.ok) throw Failure(exit_invalid_problem, in.source + " is not a ball: " + ball.message);
   const std::vector<char> interior = raw ? std::vector<char>{} : simply_connected_interior(in);
   const auto start = std::chrono::steady_clock::now();
-  const topology::TopologicalExpansionResult result = topology::topological_expansion(in.mesh, *order, interior);
+  const topology::TopologicalExpansionResult result = topology::topological_expansion(in.mesh, order, interior);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  print_report(in, *order, result, seconds, json);
+  print_report(in, order, result, seconds, json);
   std::fflush(stdout);
   return exit_ok;
 }

@@ -1,6 +1,7 @@
 #pragma once
 // Registry of cmx subcommands. A command is a function taking the arguments after its name and
 // returning the process exit code; it writes results to stdout and diagnostics to stderr.
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,9 +28,16 @@ struct Command {
   int (*run)(const std::vector<std::string>& args);
 };
 
-// "" when a file can be created at `path` (its directory exists and is writable), else why not.
-// Commands check their outputs with it before computing anything.
-std::string unwritable_reason(const std::string& path);
+// What a command throws when it cannot go on: main prints the message (cli/messages.hpp) and
+// returns the code.
+class Failure : public std::runtime_error {
+ public:
+  Failure(int code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  int code() const { return code_; }
+
+ private:
+  int code_;
+};
 
 // Returns true so that it can initialise a namespace-scope constant (self-registration).
 bool register_command(const Command& command);

@@ -1,10 +1,14 @@
-// cmx: entry point. Dispatches to the registered subcommands.
+// cmx: entry point. Dispatches to the registered subcommands; whatever a command lets escape is
+// reported here, through the one printer of cli/messages.hpp.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <new>
 
-#include "command.hpp"
+#include "cli/command.hpp"
+#include "cli/files.hpp"
+#include "cli/messages.hpp"
+#include "cmx_version.hpp"
 #include "io/io_error.hpp"
 
 namespace cmx::cli {
@@ -26,10 +30,31 @@ const std::vector<Command>& commands() {
 }
 
 static void print_usage(std::FILE* out) {
-  std::fprintf(out, "usage: cmx COMMAND [ARGS...]   (cmx COMMAND --help for details)\n\ncommands:\n");
+  std::fprintf(out,
+               "usage: cmx COMMAND [ARGS...]   (cmx COMMAND --help for details)\n"
+               "       cmx --version\n\ncommands:\n");
   for (const auto& c : commands())
-    std::fprintf(out, "  %-14.*s %.*s\n", int(c.name.size()), c.name.data(), int(c.summary.size()),
-                 c.summary.data());
+    std::fprintf(out, "  %-14.*s %.*s\n", int(c.name.size()), c.name.data(), int(c.summary.size()), c.summary.data());
+}
+
+// Runs a command; what it throws becomes a message and an exit code.
+static int run_command(const Command& c, const std::vector<std::string>& args) {
+  try {
+    return c.run(args);
+  } catch (const Failure& e) {
+    message(e.what());
+    return e.code();
+  } catch (const io::IoError& e) {
+    // Commands report their input errors themselves; what escapes is mostly a failed write.
+    message(std::string(e.kind() == io::ErrorKind::write_failed ? "cannot write output: " : "") + e.what());
+    return exit_code_of(e);
+  } catch (const std::bad_alloc&) {
+    message("out of memory");
+    return exit_internal;
+  } catch (const std::exception& e) {
+    message(std::string("internal error: ") + e.what());
+    return exit_internal;
+  }
 }
 
 }  // namespace cmx::cli
@@ -40,30 +65,20 @@ int main(int argc, char** argv) {
     print_usage(stderr);
     return exit_usage;
   }
-  std::string_view name = argv[1];
+  const std::string_view name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {
     print_usage(stdout);
     return exit_ok;
   }
-  for (const auto& c : commands()) {
-    if (c.name != name) continue;
-    std::vector<std::string> args(argv + 2, argv + argc);
-    try {
-      return c.run(args);
-    } catch (const cmx::io::IoError& e) {
-      // Commands report their input errors themselves; what escapes is mostly a failed write.
-      const bool write = e.kind() == cmx::io::ErrorKind::write_failed;
-      std::fprintf(stderr, "cmx %s: %s%s\n", argv[1], write ? "cannot write output: " : "", e.what());
-      return write ? exit_write_failed : exit_bad_input;
-    } catch (const std::bad_alloc&) {
-      std::fprintf(stderr, "cmx %s: out of memory\n", argv[1]);
-      return exit_internal;
-    } catch (const std::exception& e) {
-      std::fprintf(stderr, "cmx %s: internal error: %s\n", argv[1], e.what());
-      return exit_internal;
-    }
+  if (name == "--version") {
+    std::printf("cmx %s\n", cmx_version);
+    return exit_ok;
   }
-  std::fprintf(stderr, "cmx: unknown command '%s'\n", argv[1]);
-  print_usage(stderr);
+  for (const auto& c : commands())
+    if (c.name == name) {
+      set_command_name(name);
+      return run_command(c, std::vector<std::string>(argv + 2, argv + argc));
+    }
+  message("unknown command '" + std::string(name) + "' (cmx --help lists the commands)");
   return exit_usage;
 }

@@ -7,6 +7,7 @@
 //   CHECK(r.exit_code == 0); CHECK(r.out == "+\n");
 #include <fcntl.h>
 #include <poll.h>
+#include <stdlib.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -14,7 +15,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,12 +29,24 @@ struct RunResult {
   std::string out, err;
 };
 
-// Runs `program` with `args` (argv[1..]), feeding `input` to its stdin. Throws
-// std::runtime_error if the process cannot be started.
+// A pseudo-terminal for the child's stderr (programs show progress only on a terminal): fds[0]
+// is the master the parent reads, fds[1] the terminal the child writes.
+inline void open_terminal(int fds[2]) {
+  fds[0] = posix_openpt(O_RDWR | O_NOCTTY);
+  if (fds[0] < 0 || grantpt(fds[0]) || unlockpt(fds[0])) throw std::runtime_error("run_program: no pseudo-terminal");
+  fds[1] = open(ptsname(fds[0]), O_RDWR | O_NOCTTY);
+  if (fds[1] < 0) throw std::runtime_error("run_program: cannot open the pseudo-terminal");
+}
+
+// Runs `program` with `args` (argv[1..]), feeding `input` to its stdin; with
+// `stderr_on_terminal`, stderr is a pseudo-terminal (err then holds what the terminal got).
+// Throws std::runtime_error if the process cannot be started.
 inline RunResult run_program(const std::string& program, const std::vector<std::string>& args,
-                             const std::string& input = "") {
+                             const std::string& input = "", bool stderr_on_terminal = false) {
   int in_pipe[2], out_pipe[2], err_pipe[2];
-  if (pipe(in_pipe) || pipe(out_pipe) || pipe(err_pipe)) throw std::runtime_error("run_program: pipe failed");
+  if (pipe(in_pipe) || pipe(out_pipe)) throw std::runtime_error("run_program: pipe failed");
+  if (stderr_on_terminal) open_terminal(err_pipe);
+  else if (pipe(err_pipe)) throw std::runtime_error("run_program: pipe failed");
   std::vector<char*> argv;
   argv.push_back(const_cast<char*>(program.c_str()));
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -82,7 +97,7 @@ inline RunResult run_program(const std::string& program, const std::vector<std::
         }
         continue;
       }
-      const ssize_t got = read(fds[i].fd, buf, sizeof buf);
+      const ssize_t got = read(fds[i].fd, buf, sizeof buf);  // a terminal's master reads EIO at the end
       if (got > 0) {
         (fds[i].fd == out_pipe[0] ? r.out : r.err).append(buf, std::size_t(got));
       } else {
@@ -108,6 +123,14 @@ inline RunResult run_cmx(const std::vector<std::string>& args, const std::string
 }
 #endif
 
+// The bytes of a file ("" when it cannot be read).
+inline std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 // Writes `content` to a fresh file in the temporary directory and returns its path. The file
 // stays (tests are short-lived; the OS cleans TMPDIR).
 inline std::string write_temp_file(const std::string& content, const std::string& suffix = ".txt") {
@@ -120,6 +143,14 @@ inline std::string write_temp_file(const std::string& content, const std::string
   close(fd);
   std::ofstream(name.data(), std::ios::binary) << content;
   return name.data();
+}
+
+// A new empty directory in the temporary directory.
+inline std::string fresh_directory() {
+  const std::string path = write_temp_file("", "");
+  std::filesystem::remove(path);
+  std::filesystem::create_directories(path);
+  return path;
 }
 
 }  // namespace cmx::test

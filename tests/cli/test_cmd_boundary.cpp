@@ -16,18 +16,12 @@
 
 #include "run_cmx.hpp"
 
+using cmx::test::file_text;
 using cmx::test::run_cmx;
 using cmx::test::write_temp_file;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // A fresh path in the temporary directory that does not exist yet.
 std::string fresh_path(const std::string& suffix) {
@@ -38,7 +32,7 @@ std::string fresh_path(const std::string& suffix) {
 
 // The boundary vertices of a legacy VTK tet mesh as written by cmx: vertices of faces in one tet.
 std::set<std::uint32_t> vtk_boundary_vertices(const std::string& path) {
-  std::istringstream in(slurp(path));
+  std::istringstream in(file_text(path));
   std::string word;
   std::size_t points = 0, cells = 0, size = 0;
   while (in >> word && word != "POINTS") {
@@ -84,7 +78,7 @@ bool is_plain_decimal(const std::string& text) {
 // Checks a boundary file: "index x y z" lines, ascending indices covering exactly `boundary`,
 // exact decimals. Returns the radii of the points.
 std::vector<double> check_boundary_file(const std::string& path, const std::set<std::uint32_t>& boundary) {
-  std::istringstream in(slurp(path));
+  std::istringstream in(file_text(path));
   std::string line;
   std::vector<std::uint32_t> indices;
   std::vector<double> radii;
@@ -152,15 +146,15 @@ TEST_CASE("cmx boundary: the same seed gives the same bytes, another seed anothe
   REQUIRE(run_cmx({"boundary", mesh, "--shape", "star", "--seed", "5", "-o", b}).exit_code == 0);
   REQUIRE(run_cmx({"boundary", mesh, "--shape", "star:6", "--output", c}).exit_code == 0);
   REQUIRE(run_cmx({"boundary", mesh, "--shape", "tet", "--seed", "5", "-o", d}).exit_code == 0);
-  CHECK(slurp(a) == slurp(b));
-  CHECK(slurp(a) != slurp(c));
-  CHECK(slurp(a) != slurp(d));
+  CHECK(file_text(a) == file_text(b));
+  CHECK(file_text(a) != file_text(c));
+  CHECK(file_text(a) != file_text(d));
   // The same mesh in another format (same exact positions) gives the same boundary.
   const auto vtk = fresh_path(".vtk");
   REQUIRE(run_cmx({"generate-mesh", "--shape", "grid:3,2,2", "--perturb", "3", "-o", vtk}).exit_code == 0);
   const auto e = fresh_path(".txt");
   REQUIRE(run_cmx({"boundary", vtk, "--shape", "star:5", "-o", e}).exit_code == 0);
-  CHECK(slurp(a) == slurp(e));
+  CHECK(file_text(a) == file_text(e));
 }
 
 TEST_CASE("cmx boundary: bad command lines exit 2 and write nothing") {
@@ -194,7 +188,7 @@ TEST_CASE("cmx boundary: unreadable input exits 3, a non-ball exits 4, and no fi
   const auto garbage = write_temp_file("# vtk DataFile Version 4.2\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 double\n0 0 zero\n", ".vtk");
   r = run_cmx({"boundary", garbage, "--shape", "tet", "-o", out});
   CHECK(r.exit_code == 3);
-  CHECK(r.err.find(garbage + ":") == 0);
+  CHECK(r.err.find("cmx boundary: " + garbage + ":") == 0);
   CHECK_FALSE(fs::exists(out));
   // Two positive tets sharing only vertex 0: readable, consistently oriented, not a ball.
   const auto pinched = write_temp_file(
@@ -210,7 +204,7 @@ TEST_CASE("cmx boundary: unreadable input exits 3, a non-ball exits 4, and no fi
   std::ofstream(out) << "keep me\n";
   r = run_cmx({"boundary", pinched, "--shape", "sphere", "-o", out});
   CHECK(r.exit_code == 4);
-  CHECK(slurp(out) == "keep me\n");
+  CHECK(file_text(out) == "keep me\n");
 }
 
 TEST_CASE("cmx generate-mesh: every shape and format gives a ball") {
@@ -228,14 +222,14 @@ TEST_CASE("cmx generate-mesh: every shape and format gives a ball") {
     }
   const auto ovm = fresh_path(".ovm");
   REQUIRE(run_cmx({"generate-mesh", "--shape", "grid:2,2,2", "--perturb", "1", "--amplitude", "0.1", "-o", ovm}).exit_code == 0);
-  CHECK(slurp(ovm).find("str_exact_position") != std::string::npos);
+  CHECK(file_text(ovm).find("str_exact_position") != std::string::npos);
   // Deterministic; unperturbed meshes have integer coordinates.
   const auto a = fresh_path(".vtk"), b = fresh_path(".vtk"), plain = fresh_path(".vtk");
   REQUIRE(run_cmx({"generate-mesh", "--shape", "ball:3", "--perturb", "4", "-o", a}).exit_code == 0);
   REQUIRE(run_cmx({"generate-mesh", "--shape", "ball:3", "--perturb", "4", "-o", b}).exit_code == 0);
-  CHECK(slurp(a) == slurp(b));
+  CHECK(file_text(a) == file_text(b));
   REQUIRE(run_cmx({"generate-mesh", "--shape", "grid:1,1,1", "-o", plain}).exit_code == 0);
-  CHECK(slurp(plain).find("POINTS 8 double\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n") != std::string::npos);
+  CHECK(file_text(plain).find("POINTS 8 double\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n") != std::string::npos);
 }
 
 TEST_CASE("cmx generate-mesh: bad command lines exit 2") {

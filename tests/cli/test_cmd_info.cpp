@@ -21,9 +21,42 @@ TEST_CASE("cmx info --json: counts and ball verdict") {
   CHECK(r.out.find("\"tets\": 2") != std::string::npos);
   CHECK(r.out.find("\"boundary_vertices\": 5") != std::string::npos);
   CHECK(r.out.find("\"reason\": ") != std::string::npos);
-  // (0,1,2,3) is positive and (1,3,2,4) negative: read fine, but not a consistently oriented ball.
+  // (0,1,2,3) and (1,3,2,4) list their common face in the same order: not a ball as listed
+  // (topology), and (0,1,2,3) is positive, (1,3,2,4) negative (geometry).
   CHECK(r.out.find("\"is_ball\": false") != std::string::npos);
-  CHECK(r.out.find("inconsistent orientation") != std::string::npos);
+  CHECK(r.out.find("must be opposite") != std::string::npos);
+  CHECK(r.out.find("\"verdict\": \"inverted tets\", \"inverted\": 1, \"flat\": 0, \"first_inverted\": 1") !=
+        std::string::npos);
+}
+
+// Two tets on the face (1, 2, 3), listed as a ball is (the face in opposite orders), with the
+// fifth vertex where given: across the face (an embedding), on vertex 0's side (the second tet
+// inverted) or on the face's plane (flat).
+std::string two_tet_ball(const std::string& fifth) {
+  return write_temp_file("# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
+                         "0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + fifth + "\nCELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n",
+                         ".vtk");
+}
+
+TEST_CASE("cmx info: a ball is a ball whatever its coordinates, and the orientation verdict is separate") {
+  for (const auto& [fifth, verdict] : {std::pair{"1 1 1", "consistent"}, std::pair{"0.1 0.1 0.1", "inverted tets"},
+                                       std::pair{"0.5 0.5 0", "flat tets"}}) {
+    CAPTURE(fifth);
+    const std::string path = two_tet_ball(fifth);
+    const auto j = run_cmx({"info", path, "--json"});
+    INFO(j.out << j.err);
+    CHECK(j.exit_code == 0);
+    CHECK(j.out.find("\"is_ball\": true") != std::string::npos);
+    CHECK(j.out.find("\"verdict\": \"" + std::string(verdict) + "\"") != std::string::npos);
+    const auto t = run_cmx({"info", path});
+    CHECK(t.out.find("ball: yes (") != std::string::npos);
+    CHECK(t.out.find("orientation det[b-a,c-a,d-a]: " + std::string(verdict) + " (") != std::string::npos);
+  }
+  const auto inverted = run_cmx({"info", two_tet_ball("0.1 0.1 0.1"), "--json"});
+  CHECK(inverted.out.find("\"positive\": 1, \"negative\": 1, \"zero\": 0, \"verdict\": \"inverted tets\", "
+                          "\"inverted\": 1, \"flat\": 0, \"first_inverted\": 1}") != std::string::npos);
+  const auto flat = run_cmx({"info", two_tet_ball("0.5 0.5 0")});
+  CHECK(flat.out.find("flat tets (1 positive, 0 negative, 1 zero; first flat: tet 1)") != std::string::npos);
 }
 
 TEST_CASE("cmx info on a ball, text output") {
@@ -42,7 +75,7 @@ TEST_CASE("cmx info: read errors exit 3 with file:line") {
   const auto path = write_temp_file("# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 double\n0 0 0\n1 x 0\n", ".vtk");
   const auto r = run_cmx({"info", path});
   CHECK(r.exit_code == 3);
-  CHECK(r.err.find(path + ":7: ") == 0);
+  CHECK(r.err.find("cmx info: " + path + ":7: ") == 0);
   CHECK(run_cmx({"info"}).exit_code == 2);
   CHECK(run_cmx({"info", "/nonexistent.vtk"}).exit_code == 3);
 }

@@ -9,8 +9,12 @@
 #include <sstream>
 #include <string>
 
+#include "map_case.hpp"
 #include "run_cmx.hpp"
 
+using cmx::test::Case;
+using cmx::test::file_text;
+using cmx::test::make_case;
 using cmx::test::run_cmx;
 using cmx::test::run_program;
 using cmx::test::write_temp_file;
@@ -18,33 +22,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string fresh_dir() {
-  const std::string base = write_temp_file("", "");
-  fs::remove(base);
-  fs::create_directories(base);
-  return base;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// A generated mesh file (by cmx itself) and its star-shaped boundary file.
-struct Case {
-  std::string dir, mesh, boundary;
-};
-
-Case make_case(const std::string& shape_arg, const std::string& boundary_shape) {
-  Case c;
-  c.dir = fresh_dir();
-  c.mesh = c.dir + "/domain.vtk";
-  c.boundary = c.dir + "/boundary.txt";
-  REQUIRE(run_cmx({"generate-mesh", "--shape", shape_arg, "--perturb", "3", "-o", c.mesh}).exit_code == 0);
-  REQUIRE(run_cmx({"boundary", c.mesh, "--shape", boundary_shape, "-o", c.boundary}).exit_code == 0);
-  return c;
+// Two positive tets sharing only vertex 0: readable, not a ball.
+std::string bowtie_mesh() {
+  return write_temp_file(
+      "# vtk DataFile Version 4.2\nbowtie\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 7 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1 -1 0 0 0 -1 0 0 0 -1\nCELLS 2 10\n4 0 1 2 3\n4 0 5 4 6\nCELL_TYPES 2\n10 10\n",
+      ".vtk");
 }
 
 bool have_checker() { return fs::exists(fs::path(CMX_SHARED_DIR) / "tools" / "verify_tmap.py"); }
@@ -71,7 +54,7 @@ TEST_CASE("cmx map writes the exact map and the display formats, and reports a v
     CAPTURE(ext);
     CHECK(fs::file_size(out + ext) > 0);
   }
-  const std::string report = slurp(c.dir + "/report.json");
+  const std::string report = file_text(c.dir + "/report.json");
   CHECK(report.find("\"status\": \"success\"") != std::string::npos);
   CHECK(report.find("\"exact_valid\": true") != std::string::npos);
   CHECK(report.find("\"growth_ratio\"") != std::string::npos);
@@ -90,7 +73,7 @@ TEST_CASE("cmx map --snap: every policy runs, and the written doubles are what t
                             "--report", out + ".json", "--quiet"});
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
-    const std::string report = slurp(out + ".json");
+    const std::string report = file_text(out + ".json");
     CHECK(report.find(std::string("\"snap\": \"") + policy + "\"") != std::string::npos);
     const bool none = std::string(policy) == "none";
     CHECK(report.find(none ? "\"double_checked\": false" : "\"double_checked\": true") != std::string::npos);
@@ -119,7 +102,7 @@ TEST_CASE("cmx map --subclusters: sizes 0 to 4 run and are reported, anything el
                             out + ".json", "--quiet"});
     INFO(r.err);
     REQUIRE(r.exit_code == 0);
-    const std::string report = slurp(out + ".json");
+    const std::string report = file_text(out + ".json");
     CHECK(report.find(std::string("\"subclusters\": ") + size) != std::string::npos);
     CHECK(report.find("\"subcluster_candidates\": ") != std::string::npos);
     CHECK(report.find("\"subcluster_search\": ") != std::string::npos);
@@ -139,7 +122,7 @@ TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
                           c.dir + "/r.json", "--quiet"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  std::istringstream in(slurp(trace));
+  std::istringstream in(file_text(trace));
   std::string line;
   REQUIRE(std::getline(in, line));
   CHECK(line == "step,kind,vertex,cone_rows,lp,bits,max_bits,mean_bits,added_vertices,degenerate_left,cluster_left,seconds");
@@ -151,7 +134,7 @@ TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
     last = line;
   }
   // One row per expansion: the report's simple + star-shapified + automatic expansions.
-  const std::string report = slurp(c.dir + "/r.json");
+  const std::string report = file_text(c.dir + "/r.json");
   auto number = [&](const std::string& key) {
     const auto at = report.find("\"" + key + "\": ");
     REQUIRE(at != std::string::npos);
@@ -174,7 +157,7 @@ TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
   const auto p = run_cmx({"plot", trace, "-o", svg});
   INFO(p.err);
   REQUIRE(p.exit_code == 0);
-  const std::string text = slurp(svg);
+  const std::string text = file_text(svg);
   CHECK(text.find("<svg") != std::string::npos);
   CHECK(text.find("<polyline") != std::string::npos);
   CHECK(text.find("degenerate tets left") != std::string::npos);
@@ -195,8 +178,8 @@ TEST_CASE("cmx map --shape generates the boundary itself, and reruns give identi
   const std::string a = c.dir + "/a", b = c.dir + "/b";
   REQUIRE(run_cmx({"map", c.mesh, "--shape", "stiff-tet", "-o", a, "--quiet"}).exit_code == 0);
   REQUIRE(run_cmx({"map", c.mesh, "--shape", "stiff-tet", "-o", b, "--quiet"}).exit_code == 0);
-  CHECK(slurp(a + ".tmap") == slurp(b + ".tmap"));
-  CHECK(slurp(a + ".tmap").rfind("tmap 1\n", 0) == 0);
+  CHECK(file_text(a + ".tmap") == file_text(b + ".tmap"));
+  CHECK(file_text(a + ".tmap").rfind("tmap 1\n", 0) == 0);
 }
 
 TEST_CASE("cmx map takes the boundary from a codomain mesh with the same connectivity") {
@@ -211,7 +194,7 @@ TEST_CASE("cmx map takes the boundary from a codomain mesh with the same connect
 TEST_CASE("cmx map: a boundary that is not star-shaped exits 5, writes nothing and names a triangle") {
   const Case c = make_case("grid:2,2,2", "tet");
   // Grid vertex 22 is the centre of the top face of the 3x3x3 vertex grid: pull it far down.
-  std::istringstream in(slurp(c.boundary));
+  std::istringstream in(file_text(c.boundary));
   std::string text, line;
   while (std::getline(in, line)) text += (line.rfind("22 ", 0) == 0 ? std::string("22 0 0 -50") : line) + "\n";
   const std::string bad = write_temp_file(text);
@@ -221,14 +204,14 @@ TEST_CASE("cmx map: a boundary that is not star-shaped exits 5, writes nothing a
   CHECK(r.err.find("not star-shaped") != std::string::npos);
   CHECK(r.err.find("boundary triangle") != std::string::npos);
   CHECK_FALSE(fs::exists(out + ".tmap"));
-  CHECK(slurp(c.dir + "/r.json").find("\"status\": \"not_star_shaped\"") != std::string::npos);
+  CHECK(file_text(c.dir + "/r.json").find("\"status\": \"not_star_shaped\"") != std::string::npos);
 }
 
 TEST_CASE("cmx map: wrong boundary vertex set, non-ball mesh, bad numbers and bad options") {
   const Case c = make_case("grid:2,2,2", "tet");
   const std::string out = c.dir + "/never";
   // A boundary file without its last line: a vertex lacks its position (exit 4).
-  std::string text = slurp(c.boundary);
+  std::string text = file_text(c.boundary);
   text.erase(text.rfind('\n', text.size() - 2) + 1);
   auto r = run_cmx({"map", c.mesh, "--boundary", write_temp_file(text), "-o", out});
   CHECK(r.exit_code == 4);
@@ -238,10 +221,7 @@ TEST_CASE("cmx map: wrong boundary vertex set, non-ball mesh, bad numbers and ba
   CHECK(r.exit_code == 3);
   CHECK(r.err.find(":1:") != std::string::npos);
   // Two tets sharing only a vertex: not a ball (exit 4).
-  const std::string bowtie = write_temp_file(
-      "# vtk DataFile Version 4.2\nbowtie\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 7 double\n"
-      "0 0 0 1 0 0 0 1 0 0 0 1 -1 0 0 0 -1 0 0 0 -1\nCELLS 2 10\n4 0 1 2 3\n4 0 5 4 6\nCELL_TYPES 2\n10 10\n",
-      ".vtk");
+  const std::string bowtie = bowtie_mesh();
   r = run_cmx({"map", bowtie, "--shape", "tet", "-o", out});
   CHECK(r.exit_code == 4);
   CHECK_FALSE(fs::exists(out + ".tmap"));
@@ -260,7 +240,7 @@ TEST_CASE("cmx map: the time limit exits 6 and leaves no output, an existing out
   std::ofstream(out + ".tmap") << "old content\n";
   const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", out, "--time-limit", "1e-9"});
   CHECK(r.exit_code == 6);
-  CHECK(slurp(out + ".tmap") == "old content\n");
+  CHECK(file_text(out + ".tmap") == "old content\n");
 }
 
 TEST_CASE("cmx map --no-merge keeps the vertices merges would remove, and both maps verify") {
@@ -270,7 +250,7 @@ TEST_CASE("cmx map --no-merge keeps the vertices merges would remove, and both m
   REQUIRE(r.exit_code == 0);
   r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", plain, "--report", plain + ".json", "--no-merge"});
   REQUIRE(r.exit_code == 0);
-  const std::string with = slurp(merged + ".json"), without = slurp(plain + ".json");
+  const std::string with = file_text(merged + ".json"), without = file_text(plain + ".json");
   CHECK(with.find("\"merge\": true") != std::string::npos);
   CHECK(without.find("\"merge\": false") != std::string::npos);
   CHECK(without.find("\"merged\": 0,") != std::string::npos);
@@ -289,7 +269,7 @@ TEST_CASE("cmx map --no-flip-collapse makes no flip collapse, and both maps veri
   r = run_cmx(
       {"map", c.mesh, "--boundary", c.boundary, "-o", plain, "--report", plain + ".json", "--no-flip-collapse"});
   REQUIRE(r.exit_code == 0);
-  const std::string with = slurp(flipped + ".json"), without = slurp(plain + ".json");
+  const std::string with = file_text(flipped + ".json"), without = file_text(plain + ".json");
   CHECK(with.find("\"flip_collapse\": true") != std::string::npos);
   CHECK(without.find("\"flip_collapse\": false") != std::string::npos);
   CHECK(without.find("\"flip_collapses\": 0,") != std::string::npos);
@@ -311,7 +291,7 @@ TEST_CASE("cmx map: a NOBUENOSS cluster mesh exits 7 (stuck), says so in the rep
   CHECK(r.exit_code == 7);
   CHECK(r.err.find("NOBUENOSS") != std::string::npos);
   CHECK_FALSE(fs::exists(out + ".tmap"));
-  const std::string json = slurp(report);
+  const std::string json = file_text(report);
   CHECK(json.find("\"status\": \"stuck\"") != std::string::npos);
   CHECK(json.find("none satisfies Eq. (1)") != std::string::npos);
   // The fallback's shelling search ran on the input and found none (greedy shelling of this ball
@@ -331,8 +311,8 @@ TEST_CASE("cmx map --arith: double maps and verifies, too few bits exits 8 sayin
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.find("coordinates in double") != std::string::npos);
-  CHECK(slurp(out + ".json").find("\"arith\": \"double\"") != std::string::npos);
-  CHECK(slurp(out + ".json").find("\"snap\": \"nearest\"") != std::string::npos);
+  CHECK(file_text(out + ".json").find("\"arith\": \"double\"") != std::string::npos);
+  CHECK(file_text(out + ".json").find("\"snap\": \"nearest\"") != std::string::npos);
   if (have_checker()) CHECK(independent_check(c, out + ".tmap"));
 
   // An unperturbed integer grid survives 8-bit rounding; the sphere's expansions do not.
@@ -345,7 +325,7 @@ TEST_CASE("cmx map --arith: double maps and verifies, too few bits exits 8 sayin
   CHECK(r.err.find("precision_lost: validity lost in") != std::string::npos);
   CHECK(r.err.find("tet (") != std::string::npos);
   CHECK_FALSE(fs::exists(lost + ".tmap"));
-  const std::string report = slurp(lost + ".json");
+  const std::string report = file_text(lost + ".json");
   CHECK(report.find("\"status\": \"precision_lost\"") != std::string::npos);
   CHECK(report.find("\"precision_loss\"") != std::string::npos);
   CHECK(report.find("\"orientation\"") != std::string::npos);
@@ -373,4 +353,88 @@ TEST_CASE("cmx map: an output that cannot be written exits 9 before computing, n
     CHECK(r.err.find("cannot write") != std::string::npos);
     CHECK(r.out.find("map: success") == std::string::npos);  // nothing was computed
   }
+}
+
+TEST_CASE("cmx map --time-limit takes huge limits and inf (no limit), and rejects the rest naming the option") {
+  const Case c = make_case("grid:2,2,2", "tet");
+  // The report of a run that stops before the clock matters shows the limit as a number.
+  const std::string bowtie = bowtie_mesh();
+  for (const auto& [given, shown] : std::vector<std::pair<std::string, std::string>>{
+           {"1e10", "10000000000"}, {"1e300", "1.0000000000000001e+300"}, {"inf", "0"}, {"1e999", "0"}, {"2.5", "2.5"}}) {
+    CAPTURE(given);
+    const std::string report = c.dir + "/tl_" + given + ".json";
+    const auto r = run_cmx({"map", bowtie, "--shape", "tet", "--time-limit", given, "--report", report});
+    CHECK(r.exit_code == 4);
+    CHECK(file_text(report).find("\"time_limit\": " + shown + "\n") != std::string::npos);
+  }
+  // inf is no limit: the run completes.
+  const auto done = run_cmx({"map", c.mesh, "--boundary", c.boundary, "--time-limit=inf", "--report", c.dir + "/inf.json", "-q"});
+  CHECK(done.exit_code == 0);
+  CHECK(file_text(c.dir + "/inf.json").find("\"time_limit\": 0\n") != std::string::npos);
+  for (const char* bad : {"0", "-1", "-inf", "nan", "NaN", "abc", "5s", "", " 5", "0x"}) {
+    CAPTURE(bad);
+    const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "--time-limit", bad});
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.rfind("cmx map: --time-limit: ", 0) == 0);
+  }
+}
+
+TEST_CASE("cmx map names the culprit: the non-ball domain, the boundary file and its missing vertices") {
+  const Case c = make_case("grid:2,2,2", "tet");
+  const std::string pinched = bowtie_mesh();
+  for (const char* shape : {"tet", "sphere"}) {
+    const auto r = run_cmx({"map", pinched, "--shape", shape});
+    CHECK(r.exit_code == 4);
+    CHECK(r.err.find("cmx map: " + pinched + " is not a ball: ") == 0);
+  }
+  auto r = run_cmx({"map", c.mesh, "--codomain", pinched});
+  CHECK(r.exit_code == 4);  // two inputs that do not fit together
+  CHECK(r.err.find(pinched) != std::string::npos);
+  // Drop the first three lines of the boundary file: three boundary vertices lack positions.
+  std::string text = file_text(c.boundary);
+  const std::string first = text.substr(0, text.find(' '));
+  for (int i = 0; i < 3; ++i) text.erase(0, text.find('\n') + 1);
+  const std::string partial = write_temp_file(text);
+  r = run_cmx({"map", c.mesh, "--boundary", partial, "--report", c.dir + "/partial.json"});
+  CHECK(r.exit_code == 4);
+  CHECK(r.err.find("cmx map: " + partial + ": 3 boundary vertices have no prescribed position; first: vertex " + first) == 0);
+  CHECK(file_text(c.dir + "/partial.json").find("\"status\": \"boundary_mismatch\"") != std::string::npos);
+}
+
+TEST_CASE("cmx map: a domain with inverted or flat tets is not a valid problem (exit 4), a syntax error is malformed (3)") {
+  const auto two_tets = [](const std::string& fifth) {
+    return write_temp_file("# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
+                           "0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + fifth + "\nCELLS 2 10\n4 0 1 2 3\n4 1 2 3 4\nCELL_TYPES 2\n10\n10\n",
+                           ".vtk");
+  };
+  const std::string inverted = two_tets("0.1 0.1 0.1"), flat = two_tets("0.5 0.5 0");
+  for (const auto& [mesh, what] : {std::pair{inverted, "orientation"}, std::pair{flat, "zero volume"}}) {
+    const auto r = run_cmx({"map", mesh, "--shape", "tet", "--report", mesh + ".json"});
+    CHECK(r.exit_code == 4);
+    CHECK(r.err.find("cmx map: " + mesh + ":") == 0);
+    CHECK(r.err.find(what) != std::string::npos);
+    CHECK(file_text(mesh + ".json").find("\"status\": \"source_not_positive\"") != std::string::npos);
+    CHECK(run_cmx({"boundary", mesh, "--shape", "tet", "-o", mesh + ".txt"}).exit_code == 4);
+  }
+  const std::string syntax = two_tets("0.1 zero 0.1");
+  CHECK(run_cmx({"map", syntax, "--shape", "tet"}).exit_code == 3);
+  const std::string repeated = write_temp_file(
+      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+      "CELLS 1 5\n4 0 1 2 2\nCELL_TYPES 1\n10\n",
+      ".vtk");
+  CHECK(run_cmx({"map", repeated, "--shape", "tet"}).exit_code == 3);  // a tet repeating a vertex: malformed
+}
+
+TEST_CASE("cmx map shows a progress line naming the phase only on a terminal and not with --quiet") {
+  const Case c = make_case("grid:3,3,3", "tet");
+  const auto r = run_program(CMX_EXE, {"map", c.mesh, "--boundary", c.boundary}, "", true);
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(r.err.find("\r  expansion: expanded ") != std::string::npos);
+  CHECK(r.err.find("\x1b[K") != std::string::npos);
+  const auto q = run_program(CMX_EXE, {"map", c.mesh, "--boundary", c.boundary, "--quiet"}, "", true);
+  CHECK(q.exit_code == 0);
+  CHECK(q.err.empty());
+  const auto piped = run_cmx({"map", c.mesh, "--boundary", c.boundary});
+  CHECK(piped.err.find("expansion:") == std::string::npos);
 }

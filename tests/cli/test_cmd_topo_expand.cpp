@@ -190,7 +190,7 @@ TEST_CASE("cmx topo-expand: unreadable input exits 3 with file:line and a non-ba
       write_temp_file("# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 double\n0 0 0\n1 x 0\n", ".vtk");
   const auto bad = run_cmx({"topo-expand", malformed});
   CHECK(bad.exit_code == 3);
-  CHECK(bad.err.find(malformed + ":7: ") == 0);
+  CHECK(bad.err.find("cmx topo-expand: " + malformed + ":7: ") == 0);
   CHECK(bad.out.empty());
   CHECK(run_cmx({"topo-expand", write_temp_file("", ".obj")}).exit_code == 3);  // unknown format
 

@@ -1,0 +1,193 @@
+#include "cli/map_args.hpp"
+
+#include "algorithm/boundary_shapes.hpp"
+#include "cli/command_line.hpp"
+#include "cli/common_options.hpp"
+#include "cli/option_values.hpp"
+#include "kernel/coordinate_arith.hpp"
+
+namespace cmx::cli {
+namespace {
+
+const HelpText help = {
+    "usage: cmx map DOMAIN (--boundary B.txt | --codomain MESH | --shape SHAPE) [-o OUT]\n"
+    "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--report-on-failure]\n"
+    "               [--time-limit S] [--check] [--no-collapse] [--no-merge] [--no-flip-collapse]\n"
+    "               [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
+    "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
+    "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
+    "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--subclusters N]\n"
+    "               [--quiet] [--version]\n",
+    "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
+    "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
+    "the verdict. Options take their value as --opt VALUE or --opt=VALUE.\n",
+    "Exit codes: 0 mapped and verified; 2 bad command line (also: an output path that is an input);\n"
+    "3 unreadable or malformed input; 4 not a valid problem (not a ball, inverted or flat tets in DOMAIN,\n"
+    "boundary mismatch, degenerate or mirrored boundary); 5 boundary not star-shaped; 6 time limit;\n"
+    "7 stuck; 8 precision lost (--arith double|mpfr:BITS); 9 an output file cannot be written (checked\n"
+    "before computing); 10 internal error (please report).\n"
+    "On any failure no map is written (an existing file is left untouched). The report and the trace of\n"
+    "a failed run are written only to paths that do not exist yet, unless --report-on-failure.\n"
+    "Stuck on a NOBUENOSS (no cluster vertex satisfies Eq. (1)), the run then searches for a shelling\n"
+    "of the input (8 greedy attempts), which the paper's fallback needs, and says whether it found one;\n"
+    "replaying a shelling is not built, so the exit code stays 7.\n"};
+
+std::string one_of(const std::string& what, const std::string& text, const std::string& choices) {
+  return "unknown " + what + " '" + text + "' (" + choices + ")";
+}
+
+void add_problem_options(CLI::App& app, MapArgs& a) {
+  app.add_option("DOMAIN", a.domain, "the mesh to map: .ovm .vtk .vtu .mesh .msh .node/.ele")->required()->type_name("");
+  app.add_option("--boundary", a.boundary, "lines 'index x y z' (exact numbers) for exactly the boundary\nvertices")
+      ->type_name("B.txt");
+  app.add_option("--codomain", a.codomain, "a mesh with DOMAIN's connectivity whose boundary vertices give\nthe positions")
+      ->type_name("MESH");
+  const auto shape = [](const std::string& text) {
+    if (!algorithm::parse_boundary_shape(text))
+      throw std::invalid_argument(one_of("shape", text, "tet, stiff-tet, sphere, star[:SEED]"));
+    return text;
+  };
+  add_parsed(app, "--shape", a.shape, shape, "generated boundary: tet, stiff-tet, sphere, star[:SEED]")->type_name("SHAPE");
+  add_parsed(app, "--seed", a.seed, parse_seed, "seed of generated shapes (default 1234; star:SEED names its own);\n0 to 2^64-1")->type_name("N");
+}
+
+void add_output_options(CLI::App& app, MapArgs& a) {
+  app.add_option("-o,--output", a.out,
+                 "output path; OUT's extension (if one of the formats) selects that\n"
+                 "format, otherwise OUT is a stem. The exact map OUT.tmap is always\n"
+                 "written. No output may be one of the input files (exit 2).")
+      ->type_name("OUT");
+  auto formats = app.add_option_function<std::vector<std::string>>(
+      "--format",
+      [&a](const std::vector<std::string>& lists) {
+        for (const auto& list : lists)
+          try {
+            for (auto& f : parse_list(list, map_formats(), "format")) a.formats.push_back(std::move(f));
+          } catch (const std::invalid_argument& e) {
+            throw CLI::ValidationError("--format", e.what());
+          }
+      },
+      "more formats, comma-separated: tmap, vtu, ovm, vtk, mesh (display\n"
+      "formats carry the doubles chosen by --snap; the report says whether\n"
+      "they are valid); may be given more than once");
+  formats->type_name("LIST")->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--report", a.report, "statistics and verdicts as JSON (written atomically)")->type_name("R.json");
+  app.add_flag("--report-on-failure", a.report_on_failure,
+               "write the report and the trace of a failed run even over existing\n"
+               "files (by default they are written only where no file exists yet)");
+  app.add_option("--trace", a.trace,
+                 "one CSV row per expansion (kind, cone size, LP outcome, bits of the\n"
+                 "new position, largest and mean bits so far, added vertices,\n"
+                 "degenerate tets and cluster vertices left, seconds); written also\n"
+                 "when the run stops early; draw it with `cmx plot T.csv -o T.svg`.\n"
+                 "Slows the run down.")
+      ->type_name("T.csv");
+}
+
+void add_run_options(CLI::App& app, MapArgs& a) {
+  add_parsed(app, "--time-limit", a.options.time_limit_seconds, parse_time_limit,
+             "stop the expansion after S seconds (exit 6); once the exact map is\n"
+             "complete, the double output stops at the limit too (the map is still\n"
+             "written). S > 0; inf (or a number beyond the doubles) is no limit,\n"
+             "which the report gives as time_limit 0, as without the option")
+      ->type_name("S");
+  app.add_flag("--check", a.options.check, "assert every invariant after every step (slow; for testing)");
+  app.add_flag("--no-collapse", [&a](std::int64_t) { a.options.collapse = false; },
+               "keep every added vertex (by default added vertices are collapsed away\n"
+               "at the end wherever the map stays valid)");
+  app.add_flag("--no-merge", [&a](std::int64_t) { a.options.merge = false; },
+               "collapse added vertices only where the vertex kept can stay in place\n"
+               "(by default an added vertex is also merged into an interior neighbour\n"
+               "that moves into its new star's kernel: in source and target if it was\n"
+               "added too, in the target only if it is an input vertex; or collapsed\n"
+               "into a neighbour that stays while up to three other added vertices\n"
+               "move, or after flips of its star that keep every tet positive)");
+  app.add_flag("--no-flip-collapse", [&a](std::int64_t) { a.options.flip_collapse = false; },
+               "merges as above but without the flips (faster on inputs without\n"
+               "interior vertices, which then keep more added vertices)");
+  app.add_flag("--no-collapse-refinement", [&a](std::int64_t) { a.options.collapse_refinement = false; },
+               "do not collapse, right after each star-shapification, the vertices it\n"
+               "added (by default they are collapsed wherever every invariant\n"
+               "survives: paper Sec. 4.2.2)");
+}
+
+void add_expansion_options(CLI::App& app, MapArgs& a) {
+  add_parsed(app, "--subclusters", a.options.subclusters, [](const std::string& t) { return parse_integer(t, 0, 4); },
+             "when no single vertex is simply expandable, try expanding N = 2..4\n"
+             "cluster vertices together before refining (paper Sec. 4.2.5;\n"
+             "default 4; 0 or 1: off)")
+      ->type_name("N");
+  add_parsed(app, "--smooth", a.options.smooth_every, [](const std::string& t) { return parse_integer(t, 0, 1000000); },
+             "every N expansions, move the cluster's expanded neighbours near the\n"
+             "last expansions toward their neighbours' centroid where every tet\n"
+             "keeps its state (paper Sec. 4.2.4; default 0: off; at most 1000000)")
+      ->type_name("N");
+  add_order_option(app, a.options.order, "expansion order: priority (default: paper Sec. 4.1.2), index,\nrandom:SEED");
+  const auto precision = [](const std::string& text) {
+    const auto p = algorithm::parse_precision_policy(text);
+    if (!p) throw std::invalid_argument(one_of("precision policy", text, "dyadic, shift, segment, none"));
+    return *p;
+  };
+  add_parsed(app, "--precision", a.options.placement.precision, precision,
+             "precision reduction of new positions (default dyadic)")
+      ->type_name("P");
+}
+
+void add_arithmetic_options(CLI::App& app, MapArgs& a) {
+  add_filter_option(app, a.options.filter, false, "predicate arithmetic: cascade (default), interval, exact,\nmpfr:BITS (all exact)");
+  add_lp_option(app, a.options.placement.lp.backend, "LP backend: certified (default), exact, glpk (if built)");
+  add_norm_option(app, a.options.placement.lp.norm, "Chebyshev row weights: l2-upper (default), l1");
+  const auto snap = [](const std::string& text) {
+    const auto p = algorithm::parse_snap_policy(text);
+    if (!p) throw std::invalid_argument(one_of("snap policy", text, "repair, chebyshev-pass, nearest, none"));
+    return *p;
+  };
+  add_parsed(app, "--snap", a.options.snap, snap,
+             "double output (default repair): repair = the nearest doubles if they\n"
+             "are valid, else chebyshev-pass, then open the crowds of vertices\n"
+             "around the shrink point (exact), then re-centre the vertices of tets\n"
+             "the doubles invert among their neighbours' doubles; a boundary vertex\n"
+             "of an all-boundary tet that rounding breaks may take another double\n"
+             "within 1 ulp; chebyshev-pass = move every interior vertex to the\n"
+             "Chebyshev centre of its star (exact map stays valid), then round;\n"
+             "nearest = round and check; none = round, no check")
+      ->type_name("POLICY");
+  const auto arith = [](const std::string& text) {
+    std::string why;
+    const auto c = parse_coordinate_arith(text, &why);
+    if (!c) throw std::invalid_argument(why);
+    return *c;
+  };
+  add_parsed(app, "--arith", a.options.placement.arith, arith,
+             "coordinate arithmetic (default rational: exact). double or mpfr:BITS\n"
+             "(2..65536 significant bits) round the input on entry (the report\n"
+             "counts what moved) and every coordinate the method creates;\n"
+             "predicates stay exact on the rounded values. Such a run stops where\n"
+             "rounding first makes a tet inverted or degenerate (exit 8) and\n"
+             "reports the step, vertex and tet; --snap is then nearest")
+      ->type_name("A");
+}
+
+}  // namespace
+
+const std::vector<std::string>& map_formats() {
+  static const std::vector<std::string> formats = {"tmap", "vtu", "ovm", "vtk", "mesh"};
+  return formats;
+}
+
+std::optional<int> parse_map_args(const std::vector<std::string>& args, MapArgs& a) {
+  CommandLine line("map", help);
+  CLI::App& app = line.app();
+  line.quiet_flag()->description("no progress line, no verdict on stdout (errors stay)");
+  add_problem_options(app, a);
+  add_output_options(app, a);
+  add_run_options(app, a);
+  add_expansion_options(app, a);
+  add_arithmetic_options(app, a);
+  if (const auto done = line.parse(args)) return done;
+  if (!a.boundary.empty() + !a.codomain.empty() + !a.shape.empty() != 1)
+    usage_error("give exactly one of --boundary, --codomain, --shape");
+  return std::nullopt;
+}
+
+}  // namespace cmx::cli

@@ -1,0 +1,26 @@
+#pragma once
+// The command line of `cmx map`: what the run reads, writes and how it maps.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "algorithm/map.hpp"
+
+namespace cmx::cli {
+
+struct MapArgs {
+  std::string domain, boundary, codomain, shape, out, report, trace;
+  std::vector<std::string> formats;  // from --format (OUT's extension is added by the output plan)
+  bool report_on_failure = false;    // a failed run may replace an existing report or trace
+  std::uint64_t seed = 1234;
+  algorithm::MapOptions options;     // time limit, check and the method's choices
+};
+
+// The formats cmx map writes.
+const std::vector<std::string>& map_formats();
+
+// nullopt: run; otherwise the exit code to return (help, version or a bad command line).
+std::optional<int> parse_map_args(const std::vector<std::string>& args, MapArgs& a);
+
+}  // namespace cmx::cli
