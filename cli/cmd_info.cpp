@@ -30,7 +30,7 @@ namespace {
 using io::TetMeshData;
 
 const HelpText help = {
-    "usage: cmx info MESH [--json]\n",
+    "usage: cmx info MESH [--json] [--source]\n",
     "Prints counts (vertices, edges, faces, tets; boundary vertices, edges, faces), Euler\n"
     "characteristics, the ball verdict with its reason, the exact orientation signs with their\n"
     "verdict, valence histograms and the bounding box.\n"
@@ -39,7 +39,9 @@ const HelpText help = {
     "Euler characteristic 1, the boundary one 2-sphere); coordinates play no part. The orientation\n"
     "verdict is the geometry: consistent (every tet of one sign), inverted tets (both signs; the\n"
     "minority counts as inverted) or flat tets (some of zero volume, whatever the others). A ball\n"
-    "given with placeholder coordinates is a ball whose orientation is not consistent.\n",
+    "given with placeholder coordinates is a ball whose orientation is not consistent.\n"
+    "A map (.tmap, as cmx map writes it) is described by its target geometry, or with --source by\n"
+    "its source geometry; the tets are read as stored, so the verdicts check the map.\n",
     "Exit status: 0 when the file was read (whatever the verdicts); 2 bad command line; 3 unreadable\n"
     "or malformed file (a directory, a missing file: the reason is given).\n"};
 
@@ -257,15 +259,20 @@ void print_text(const std::string& path, const Summary& s) {
 
 int run(const std::vector<std::string>& args) {
   std::string path;
-  bool json = false;
+  bool json = false, source = false;
   CommandLine line("info", help);
-  line.app().add_option("MESH", path, "the mesh file: .ovm .vtk .vtu .mesh .msh .node/.ele")->required()->type_name("");
+  line.app()
+      .add_option("MESH", path, "the mesh file: .ovm .vtk .vtu .mesh .msh .node/.ele, or a map .tmap")
+      ->required()
+      ->type_name("");
   line.app().add_flag("--json", json, "one JSON object on stdout (with cmx_version)");
+  line.app().add_flag("--source", source, "of a .tmap: describe its source geometry (default: its target)");
   line.quiet_flag()->description("accepted for uniformity: info prints only its results");
   if (const auto done = line.parse(args)) return *done;
   io::ReadOptions keep;
   keep.orientation = io::Orientation::keep;
-  const TetMeshData mesh = read_mesh(path, keep);
+  if (source && !io::is_map_path(path)) usage_error("--source applies to a map (.tmap) only");
+  const TetMeshData mesh = read_mesh_or_map(path, source ? io::MapGeometry::source : io::MapGeometry::target, keep);
   const Summary s = summarise(mesh);
   if (json) print_json(path, s);
   else print_text(path, s);

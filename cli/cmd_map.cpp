@@ -20,6 +20,7 @@
 #include "cli/progress_line.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
+#include "io/map_fields.hpp"
 #include "io/tmap.hpp"
 #include "io/write_mesh.hpp"
 
@@ -84,27 +85,29 @@ std::vector<io::Point3> exact(const std::vector<HPoint>& points) {
   return out;
 }
 
-// One output file of the map; `doubles` are the target positions chosen by --snap.
+// One output file of the map; `doubles` are the target positions chosen by --snap, `fields` what
+// display formats carry besides (io/map_fields.hpp: source positions, added, volumes, angles).
 void write_map_file(const std::string& format, const std::string& path, const algorithm::MapResult& r,
-                    const std::vector<std::array<double, 3>>& doubles) {
+                    const std::vector<std::array<double, 3>>& doubles, const io::DisplayFields& fields) {
   if (format == "tmap") {
     io::write_tmap(path, io::TetMap{exact(r.source), exact(r.target), r.tets});
   } else if (format == "ovm") {
     const std::vector<io::Point3> ex = exact(r.target);
     io::write_ovm(path, doubles, r.tets, &ex);
-  } else if (format == "vtu") {
-    io::write_vtu(path, doubles, r.tets);
-  } else if (format == "vtk") {
-    io::write_vtk(path, doubles, r.tets);
-  } else if (format == "mesh") {
-    io::write_medit(path, doubles, r.tets);
+  } else {
+    io::write_display_mesh(path, doubles, r.tets, io::carries_display_fields(path) ? fields : io::DisplayFields{});
   }
 }
 
 void write_outputs(const MapArgs& a, const algorithm::MapResult& r) {
   if (a.out.empty()) return;
   const OutputPlan plan = output_plan(a);
-  for (const std::string& f : plan.formats) write_map_file(f, plan.path(f), r, r.doubles.target);
+  const bool display = std::any_of(plan.formats.begin(), plan.formats.end(),
+                                   [](const std::string& f) { return f != "tmap" && f != "ovm"; });
+  const io::DisplayFields fields =
+      display ? io::map_display_fields(io::nearest_doubles(exact(r.source)), r.doubles.target, r.tets, r.stats.input_vertices)
+              : io::DisplayFields{};
+  for (const std::string& f : plan.formats) write_map_file(f, plan.path(f), r, r.doubles.target, fields);
 }
 
 constexpr const char* trace_header =

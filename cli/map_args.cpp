@@ -11,7 +11,7 @@ namespace {
 
 const HelpText help = {
     "usage: cmx map DOMAIN (--boundary B.txt | --codomain MESH | --shape SHAPE) [-o OUT]\n"
-    "               [--format tmap,vtu,ovm,vtk,mesh] [--report R.json] [--report-on-failure]\n"
+    "               [--format tmap,vtu,ovm,vtk,mesh,msh] [--report R.json] [--report-on-failure]\n"
     "               [--time-limit S] [--check] [--no-collapse] [--no-merge] [--no-flip-collapse]\n"
     "               [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
@@ -67,9 +67,12 @@ void add_output_options(CLI::App& app, MapArgs& a) {
             throw CLI::ValidationError("--format", e.what());
           }
       },
-      "more formats, comma-separated: tmap, vtu, ovm, vtk, mesh (display\n"
-      "formats carry the doubles chosen by --snap; the report says whether\n"
-      "they are valid); may be given more than once");
+      "more formats, comma-separated: tmap, vtu, ovm, vtk, mesh, msh (Gmsh\n"
+      "4.1 ASCII). Display formats carry the doubles chosen by --snap (the\n"
+      "report says whether they are valid); vtu, vtk and msh also carry\n"
+      "the source positions as point data 'source' and per tet 'added' (it\n"
+      "has a vertex added by refinement), 'source_volume', 'target_volume'\n"
+      "and 'min_dihedral_deg' (in the target). May be given more than once");
   formats->type_name("LIST")->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--report", a.report, "statistics and verdicts as JSON (written atomically)")->type_name("R.json");
   app.add_flag("--report-on-failure", a.report_on_failure,
@@ -171,7 +174,7 @@ void add_arithmetic_options(CLI::App& app, MapArgs& a) {
 }  // namespace
 
 const std::vector<std::string>& map_formats() {
-  static const std::vector<std::string> formats = {"tmap", "vtu", "ovm", "vtk", "mesh"};
+  static const std::vector<std::string> formats = {"tmap", "vtu", "ovm", "vtk", "mesh", "msh"};
   return formats;
 }
 

@@ -29,4 +29,16 @@ io::TetMeshData read_mesh(const std::string& path, const io::ReadOptions& option
   }
 }
 
+io::TetMeshData read_mesh_or_map(const std::string& path, io::MapGeometry geometry, const io::ReadOptions& options) {
+  if (!io::is_map_path(path)) return read_mesh(path, options);
+  check_readable(path);
+  try {
+    return io::mesh_of_map(io::read_tmap(path, options.orientation != io::Orientation::keep), geometry);
+  } catch (const io::IoError& e) {
+    const bool orientation =
+        e.kind() == io::ErrorKind::degenerate_tet || e.kind() == io::ErrorKind::inconsistent_orientation;
+    throw Failure(orientation ? exit_invalid_problem : exit_code_of(e), e.what());
+  }
+}
+
 }  // namespace cmx::cli
