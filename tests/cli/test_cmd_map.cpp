@@ -10,6 +10,7 @@
 #include <string>
 
 #include "run_cmx.hpp"
+#include "skip.hpp"
 
 using cmx::test::run_cmx;
 using cmx::test::run_program;
@@ -47,11 +48,12 @@ Case make_case(const std::string& shape_arg, const std::string& boundary_shape) 
   return c;
 }
 
-bool have_checker() { return fs::exists(fs::path(CMX_SHARED_DIR) / "tools" / "verify_tmap.py"); }
+bool have_checker() { return cmx::test::have_shared("tools/verify_tmap.py"); }
+std::string checker(const char* name) { return (cmx::test::shared_dir() / "tools" / name).string(); }
 
 // The independent checker's verdict on an exact map (true when it says valid).
 bool independent_check(const Case& c, const std::string& tmap) {
-  const auto r = run_program("/usr/bin/env", {"python3", std::string(CMX_SHARED_DIR) + "/tools/verify_tmap.py", c.mesh,
+  const auto r = run_program("/usr/bin/env", {"python3", checker("verify_tmap.py"), c.mesh,
                                               c.boundary, tmap});
   INFO(r.out << r.err);
   return r.exit_code == 0 && r.out.find("\"valid\": true") != std::string::npos;
@@ -78,7 +80,6 @@ TEST_CASE("cmx map writes the exact map and the display formats, and reports a v
   // The exact map reads back (every tet checked positive in source and target by the reader).
   CHECK(run_cmx({"info", out + ".ovm"}).exit_code == 0);
   if (have_checker()) CHECK(independent_check(c, out + ".tmap"));
-  else MESSAGE("skipped the independent checker: no ../shared/tools");
 }
 
 TEST_CASE("cmx map --snap: every policy runs, and the written doubles are what the report says") {
@@ -98,7 +99,7 @@ TEST_CASE("cmx map --snap: every policy runs, and the written doubles are what t
     if (std::string(policy) == "repair") CHECK(valid);
     // The doubles in the VTK file, orientations counted by the independent checker.
     if (!have_checker()) continue;
-    const auto b = run_program("/usr/bin/env", {"python3", std::string(CMX_SHARED_DIR) + "/tools/balltopo.py",
+    const auto b = run_program("/usr/bin/env", {"python3", checker("balltopo.py"),
                                                 out + ".vtk", "--json"});
     INFO(b.out);
     REQUIRE(b.exit_code == 0);

@@ -7,6 +7,7 @@
 
 #include "io/write_mesh.hpp"
 #include "io_test_util.hpp"
+#include "skip.hpp"
 
 using namespace cmx::io;
 using namespace cmx::io::test;
@@ -21,7 +22,7 @@ static std::string meshio_python() {
 TEST_CASE("meshio reads cmx's VTU, VTK, Medit and Gmsh output") {
   const std::string python = meshio_python();
   if (python.empty()) {
-    MESSAGE("skipped: python3 -c 'import meshio' fails");
+    cmx::test::skip("python3 -c 'import meshio' fails");
     return;
   }
   const auto dir = temp_dir();
