@@ -9,10 +9,13 @@
 //
 // Global preconditions of every routine here (the caller must ensure them):
 //  * binary64 arithmetic rounding to nearest, ties to even, no extended precision (x86-64 SSE2);
-//  * no fused multiply-add contraction (the project compiles with -ffp-contract=off;
-//    tests/kernel/test_fp_contract.cpp fails otherwise);
+//  * no fused multiply-add contraction (the project compiles with -ffp-contract=off, and the
+//    cmx targets give it to their consumers; tests/kernel/test_fp_contract.cpp and the consumer
+//    in tests/install/ fail otherwise), no reassociation (refused by arith/ieee_semantics.hpp);
 //  * no overflow, and no underflow in any product (sums are exact under gradual underflow).
 // Output buffers must not alias inputs.
+
+#include "arith/ieee_semantics.hpp"
 
 namespace cmx::expansion {
 

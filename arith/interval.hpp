@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cfenv>
 
+#include "arith/ieee_semantics.hpp"
 #include "arith/sign.hpp"
 
 namespace cmx {

@@ -1,14 +1,11 @@
-# The core links only GMP (with its C++ interface) and MPFR, and uses Boost headers.
-find_path(GMP_INCLUDE_DIR gmpxx.h REQUIRED)
-find_library(GMP_LIBRARY gmp REQUIRED)
-find_library(GMPXX_LIBRARY gmpxx REQUIRED)
-find_path(MPFR_INCLUDE_DIR mpfr.h REQUIRED)
-find_library(MPFR_LIBRARY mpfr REQUIRED)
+# The core links only GMP (with its C++ interface) and MPFR, found by cmake/FindCmxGmpMpfr.cmake
+# as imported targets.
+list(PREPEND CMAKE_MODULE_PATH ${CMAKE_CURRENT_LIST_DIR})
+find_package(CmxGmpMpfr REQUIRED MODULE)
 
 if(NOT TARGET cmx_gmp)
   add_library(cmx_gmp INTERFACE)
-  target_include_directories(cmx_gmp INTERFACE ${GMP_INCLUDE_DIR} ${MPFR_INCLUDE_DIR})
-  target_link_libraries(cmx_gmp INTERFACE ${GMPXX_LIBRARY} ${MPFR_LIBRARY} ${GMP_LIBRARY})
+  target_link_libraries(cmx_gmp INTERFACE CmxGmpMpfr::gmpxx CmxGmpMpfr::mpfr)
   set_target_properties(cmx_gmp PROPERTIES EXPORT_NAME gmp)
   install(TARGETS cmx_gmp EXPORT cmxTargets)
 endif()

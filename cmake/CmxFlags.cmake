@@ -1,7 +1,20 @@
-# Build flags are part of correctness: fused multiply-add contraction breaks Two-Product and the
-# error bounds of the predicate filters, and the interval arithmetic changes the rounding mode,
-# which the optimiser must respect. tests/kernel/test_fp_contract.cpp fails if this is lost.
-add_compile_options(-ffp-contract=off -frounding-math)
+# Build flags are part of correctness: fused multiply-add contraction breaks Two-Product (and
+# everything built on it, arith/expansion.hpp), and the interval arithmetic changes the rounding
+# mode, which the optimiser must respect. tests/kernel/test_fp_contract.cpp fails if this is lost.
+# They hold for every translation unit of the build, and through cmx_fp_model (linked by every
+# layer, exported as cmx::fp_model) for every target that links an installed cmx target: the
+# installed headers carry inline code that needs them (docs/DESIGN.md, "Layers and build"), and
+# a consumer's -ffp-contract=fast in CMAKE_CXX_FLAGS comes before them on the command line.
+# MSVC would need /fp:strict (no contraction, the rounding mode honoured), but the interval code
+# uses GCC builtins and inline assembly (arith/interval.hpp), so cmx does not build there anyway.
+set(cmx_gnu_like "$<COMPILE_LANG_AND_ID:CXX,GNU,Clang,AppleClang>")
+set(CMX_FP_OPTIONS "$<${cmx_gnu_like}:-ffp-contract=off>" "$<${cmx_gnu_like}:-frounding-math>")
+add_compile_options(${CMX_FP_OPTIONS})
+add_library(cmx_fp_model INTERFACE)
+target_compile_options(cmx_fp_model INTERFACE ${CMX_FP_OPTIONS})
+set_target_properties(cmx_fp_model PROPERTIES EXPORT_NAME fp_model)
+install(TARGETS cmx_fp_model EXPORT cmxTargets)
+
 if(CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang")
   add_compile_options(-Wall -Wextra -Wpedantic)
   if(CMX_WERROR)
@@ -30,7 +43,7 @@ function(cmx_add_layer name)
   target_include_directories(cmx_${name} ${scope}
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
     $<INSTALL_INTERFACE:include/cmx>)
-  target_link_libraries(cmx_${name} ${scope} ${L_DEPS})
+  target_link_libraries(cmx_${name} ${scope} cmx_fp_model ${L_DEPS})
   install(TARGETS cmx_${name} EXPORT cmxTargets ARCHIVE DESTINATION lib)
   install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION include/cmx/${name}
           FILES_MATCHING PATTERN "*.hpp")

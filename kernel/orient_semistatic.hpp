@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "arith/ieee_semantics.hpp"
 #include "arith/sign.hpp"
 
 namespace cmx::semistatic {

@@ -17,6 +17,7 @@
 #include "io/boundary.hpp"
 #include "io/read_mesh.hpp"
 #include "io/write_mesh.hpp"
+#include "skip.hpp"
 #include "topology/ball_check.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/generators.hpp"
@@ -185,17 +186,14 @@ TEST_CASE("boundary shapes on TetGen's Delaunay balls") {
   MESSAGE("refined TetGen ball: " << refined.positions.size() << " vertices, " << refined.mesh.num_tets() << " tets");
   check_all_shapes(refined.mesh, refined.positions);
 #else
-  MESSAGE("skipped: built without CMX_WITH_TETGEN_ORACLE");
+  cmx::test::skip("built without CMX_WITH_TETGEN_ORACLE");
 #endif
 }
 
 TEST_CASE("boundary shapes on the Shrink-and-Expand example domains") {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::path(CMX_SHARED_DIR) / "data" / "shrink-and-expand";
-  if (!fs::is_directory(dir)) {
-    MESSAGE("skipped: no shared data folder at " << dir.string());
-    return;
-  }
+  const fs::path dir = cmx::test::shared_dir() / "data" / "shrink-and-expand";
+  if (!cmx::test::have_shared("data/shrink-and-expand")) return;
   for (const std::string name : {"prism_domain.ovm", "notch_domain.ovm"}) {
     CAPTURE(name);
     const auto data = cmx::io::read_tet_mesh((dir / name).string());

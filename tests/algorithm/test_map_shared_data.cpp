@@ -11,6 +11,7 @@
 #include "algorithm/map.hpp"
 #include "io/boundary.hpp"
 #include "io/read_mesh.hpp"
+#include "skip.hpp"
 
 namespace fs = std::filesystem;
 using namespace cmx;
@@ -24,13 +25,9 @@ constexpr std::size_t max_tets = 10000;
 constexpr std::size_t max_tets = 100000;
 #endif
 
-fs::path data() { return fs::path(CMX_SHARED_DIR) / "data"; }
+fs::path data() { return cmx::test::shared_dir() / "data"; }
 
-bool have_data() {
-  if (fs::is_directory(data())) return true;
-  MESSAGE("skipped: no " << data().string());
-  return false;
-}
+bool have_data() { return cmx::test::have_shared("data"); }
 
 MapProblem load(const fs::path& domain, const fs::path& boundary, bool codomain) {
   io::TetMeshData mesh = io::read_tet_mesh(domain.string());

@@ -11,6 +11,7 @@
 
 #include "map_case.hpp"
 #include "run_cmx.hpp"
+#include "skip.hpp"
 
 using cmx::test::Case;
 using cmx::test::file_text;
@@ -30,11 +31,12 @@ std::string bowtie_mesh() {
       ".vtk");
 }
 
-bool have_checker() { return fs::exists(fs::path(CMX_SHARED_DIR) / "tools" / "verify_tmap.py"); }
+bool have_checker() { return cmx::test::have_shared("tools/verify_tmap.py"); }
+std::string checker(const char* name) { return (cmx::test::shared_dir() / "tools" / name).string(); }
 
 // The independent checker's verdict on an exact map (true when it says valid).
 bool independent_check(const Case& c, const std::string& tmap) {
-  const auto r = run_program("/usr/bin/env", {"python3", std::string(CMX_SHARED_DIR) + "/tools/verify_tmap.py", c.mesh,
+  const auto r = run_program("/usr/bin/env", {"python3", checker("verify_tmap.py"), c.mesh,
                                               c.boundary, tmap});
   INFO(r.out << r.err);
   return r.exit_code == 0 && r.out.find("\"valid\": true") != std::string::npos;
@@ -61,7 +63,6 @@ TEST_CASE("cmx map writes the exact map and the display formats, and reports a v
   // The exact map reads back (every tet checked positive in source and target by the reader).
   CHECK(run_cmx({"info", out + ".ovm"}).exit_code == 0);
   if (have_checker()) CHECK(independent_check(c, out + ".tmap"));
-  else MESSAGE("skipped the independent checker: no ../shared/tools");
 }
 
 TEST_CASE("cmx map --snap: every policy runs, and the written doubles are what the report says") {
@@ -81,7 +82,7 @@ TEST_CASE("cmx map --snap: every policy runs, and the written doubles are what t
     if (std::string(policy) == "repair") CHECK(valid);
     // The doubles in the VTK file, orientations counted by the independent checker.
     if (!have_checker()) continue;
-    const auto b = run_program("/usr/bin/env", {"python3", std::string(CMX_SHARED_DIR) + "/tools/balltopo.py",
+    const auto b = run_program("/usr/bin/env", {"python3", checker("balltopo.py"),
                                                 out + ".vtk", "--json"});
     INFO(b.out);
     REQUIRE(b.exit_code == 0);

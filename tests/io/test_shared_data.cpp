@@ -8,17 +8,14 @@
 #include "io/io_error.hpp"
 #include "io/read_mesh.hpp"
 #include "io/tmap.hpp"
+#include "skip.hpp"
 
 namespace fs = std::filesystem;
 using namespace cmx::io;
 
-static fs::path shared_data() { return fs::path(CMX_SHARED_DIR) / "data"; }
+static fs::path shared_data() { return cmx::test::shared_dir() / "data"; }
 
-static bool have_shared_data() {
-  if (fs::is_directory(shared_data())) return true;
-  MESSAGE("skipped: no shared data folder at " << shared_data().string());
-  return false;
-}
+static bool have_shared_data() { return cmx::test::have_shared("data"); }
 
 TEST_CASE("shrink-and-expand domains read with their boundary files") {
   if (!have_shared_data()) return;

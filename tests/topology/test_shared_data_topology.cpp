@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "io/read_mesh.hpp"
+#include "skip.hpp"
 #include "topology/ball_check.hpp"
 #include "topology/chords.hpp"
 #include "topology/complex_queries.hpp"
@@ -28,13 +29,9 @@ using namespace cmx::topology;
 
 namespace {
 
-fs::path shared_data() { return fs::path(CMX_SHARED_DIR) / "data"; }
+fs::path shared_data() { return cmx::test::shared_dir() / "data"; }
 
-bool have_shared_data() {
-  if (fs::is_directory(shared_data())) return true;
-  MESSAGE("skipped: no shared data folder at " << shared_data().string());
-  return false;
-}
+bool have_shared_data() { return cmx::test::have_shared("data"); }
 
 // The domain files of the three collections, sorted.
 std::vector<fs::path> shared_domains() {
