@@ -1,5 +1,5 @@
-# The core links only GMP (with its C++ interface) and MPFR, found by cmake/FindCmxGmpMpfr.cmake
-# as imported targets.
+# The core links GMP (with its C++ interface) and MPFR, found by cmake/FindCmxGmpMpfr.cmake
+# as imported targets, and zlib (io/ only, for compressed VTU; found in io/CMakeLists.txt).
 list(PREPEND CMAKE_MODULE_PATH ${CMAKE_CURRENT_LIST_DIR})
 find_package(CmxGmpMpfr REQUIRED MODULE)
 

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages cmx needs, only those that are missing.
 # Does nothing (and needs no root) when everything is present.
-# Usage: scripts/setup-deps.sh [--fuzz] [--bench] [--dataset]
+# Usage: scripts/setup-deps.sh [--fuzz] [--bench] [--dataset] [--gmsh]
 set -euo pipefail
 
 packages=(
@@ -20,6 +20,7 @@ for arg in "$@"; do
     --fuzz) packages+=(clang libclang-rt-14-dev) ;;
     --bench) packages+=(libcgal-dev) ;;
     --dataset) packages+=(parallel) ;;  # bench/dataset/run.sh
+    --gmsh) packages+=(gmsh) ;;         # the test that Gmsh itself opens cmx's .msh (skipped without)
     *) echo "setup-deps.sh: unknown option '$arg'" >&2; exit 2 ;;
   esac
 done

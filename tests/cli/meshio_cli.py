@@ -109,6 +109,9 @@ def test_map_outputs_open_in_meshio(tmp_path, fmt):
         added = np.asarray(mesh.cell_data["added"][0]).reshape(-1).astype(int)
         assert np.array_equal(added, (tets >= len(POINTS)).any(axis=1).astype(int))
         assert (np.asarray(mesh.cell_data["source_volume"][0]).reshape(-1) > 0).all()
+        # cmx's own reader takes the file with its fields (cmx info on a display output).
+        got = info(out + "." + fmt)
+        assert got["tets"] == len(tets) and got["orientation"]["positive"] == len(tets), got
 
 
 def main():
