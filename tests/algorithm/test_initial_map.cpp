@@ -197,7 +197,7 @@ TEST_CASE("a mesh without interior vertices has the prescribed boundary as its T
   CHECK(boundary_exactly_prescribed(p, m.target));
 }
 
-TEST_CASE("tutte_map refuses a vertex in no tet, a component without boundary and malformed boundary lists") {
+TEST_CASE("tutte_map refuses a vertex in no tet, a component without boundary, malformed boundary lists and a boundary beyond the doubles") {
   MapProblem p = test::identity_problem(perturbed_grid(2, 2, 2, 4));
   SUBCASE("a vertex in no tet") {
     p.source.push_back({Rational(9), Rational(9), Rational(9)});
@@ -224,6 +224,15 @@ TEST_CASE("tutte_map refuses a vertex in no tet, a component without boundary an
     const InitialMap m = tutte_map(p);
     CHECK_FALSE(m.ok);
     CHECK(m.message == "boundary vertex " + std::to_string(p.boundary_vertices.front()) + " is listed twice");
+  }
+  SUBCASE("a prescribed coordinate beyond the doubles") {
+    mpz_class huge;
+    mpz_ui_pow_ui(huge.get_mpz_t(), 10, 400);
+    p.boundary_positions.front()[2] = Rational(huge);
+    const InitialMap m = tutte_map(p);
+    CHECK_FALSE(m.ok);
+    CHECK(m.message == "the prescribed position of boundary vertex " +
+                           std::to_string(p.boundary_vertices.front()) + " is beyond the doubles");
   }
   SUBCASE("a tet vertex out of range") {
     p.tets.back()[2] = static_cast<std::uint32_t>(p.source.size());
