@@ -26,10 +26,15 @@ if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
 endif()
 
 # Adds a library layer: cmx_<name> with alias cmx::<name>, its headers installed under include/cmx.
-# Sources are every *.cpp of the layer's folder (one concept per file; no list to keep in sync).
+# Sources are every *.cpp of the layer's folder and of the subfolders named by SUBDIRS (one
+# concept per file; no list to keep in sync). Headers of subfolders install beside them.
 function(cmx_add_layer name)
-  cmake_parse_arguments(L "" "" "DEPS" ${ARGN})
+  cmake_parse_arguments(L "" "" "DEPS;SUBDIRS" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
+  foreach(sub IN LISTS L_SUBDIRS)
+    file(GLOB sub_sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${sub}/*.cpp)
+    list(APPEND sources ${sub_sources})
+  endforeach()
   set(scope PUBLIC)
   if(sources)
     add_library(cmx_${name} STATIC ${sources})
