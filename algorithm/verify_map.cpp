@@ -69,10 +69,46 @@ std::optional<Sign> static_orient(const HPoint& pa, const HPoint& pb, const HPoi
   return std::nullopt;
 }
 
+// The verifier's own interval filter (again not the kernel's): det[b-a, c-a, d-a] on the points'
+// cached coordinate enclosures, every operation rounded to nearest and then widened outward by
+// one ulp (std::nextafter), which contains the exact result of the operation on the interval's
+// ends without touching the rounding mode. Decides when the interval excludes 0.
+struct Range {
+  double lo, hi;
+};
+
+double down(double x) { return std::nextafter(x, -INFINITY); }
+double up(double x) { return std::nextafter(x, INFINITY); }
+Range minus(Range x, Range y) { return {down(x.lo - y.hi), up(x.hi - y.lo)}; }
+Range times(Range x, Range y) {
+  const double p[4] = {x.lo * y.lo, x.lo * y.hi, x.hi * y.lo, x.hi * y.hi};
+  return {down(std::min(std::min(p[0], p[1]), std::min(p[2], p[3]))), up(std::max(std::max(p[0], p[1]), std::max(p[2], p[3])))};
+}
+Range plus(Range x, Range y) { return {down(x.lo + y.lo), up(x.hi + y.hi)}; }
+
+std::optional<Sign> interval_orient(const HPoint& pa, const HPoint& pb, const HPoint& pc, const HPoint& pd) {
+  Range u[3], v[3], w[3];
+  for (int i = 0; i < 3; ++i) {
+    const Range a{pa.enclosure(i).lo, pa.enclosure(i).hi};
+    u[i] = minus({pb.enclosure(i).lo, pb.enclosure(i).hi}, a);
+    v[i] = minus({pc.enclosure(i).lo, pc.enclosure(i).hi}, a);
+    w[i] = minus({pd.enclosure(i).lo, pd.enclosure(i).hi}, a);
+  }
+  const Range mx = minus(times(v[1], w[2]), times(v[2], w[1]));
+  const Range my = minus(times(v[2], w[0]), times(v[0], w[2]));
+  const Range mz = minus(times(v[0], w[1]), times(v[1], w[0]));
+  const Range det = plus(plus(times(u[0], mx), times(u[1], my)), times(u[2], mz));
+  if (!std::isfinite(det.lo) || !std::isfinite(det.hi)) return std::nullopt;  // overflow, or NaN
+  if (det.lo > 0) return Sign::positive;
+  if (det.hi < 0) return Sign::negative;
+  return std::nullopt;
+}
+
 }  // namespace
 
 Sign verification_orient(const HPoint& a, const HPoint& b, const HPoint& c, const HPoint& d) {
   if (const std::optional<Sign> s = static_orient(a, b, c, d)) return *s;
+  if (const std::optional<Sign> s = interval_orient(a, b, c, d)) return *s;
   return orient3d_exact(a, b, c, d);
 }
 
@@ -169,16 +205,22 @@ Counts orientation_counts(const std::vector<topology::Tet>& tets, const std::vec
   return c;
 }
 
-// The boundary check of the header, in one space (target or source positions).
+// The boundary check of the header, in one space (target or source positions). An output face
+// with the corners of an input triangle, in its order, is that triangle: it covers it whole, and
+// nothing else may lie in it. Other faces must lie in an input triangle with its orientation,
+// and the pieces of a triangle must add up to its area (both exact). Triangles are built (their
+// exact areas computed) only for that second kind, which a map that refines no boundary face
+// never needs.
 class BoundaryTiling {
  public:
-  BoundaryTiling(std::vector<PlaneTriangle> input, const std::vector<HPoint>& pos)
-      : input_(std::move(input)), pos_(pos), area_(input_.size()) {}
+  BoundaryTiling(std::vector<std::array<HPoint, 3>> corners, const std::vector<HPoint>& pos)
+      : corners_(std::move(corners)), pos_(pos), triangle_(corners_.size()), area_(corners_.size()),
+        whole_(corners_.size(), 0), pieces_(corners_.size(), 0) {}
 
-  // Area of output face f (projected as its input triangle k), when f lies in triangle k with the
-  // same orientation; nullopt otherwise.
+  void add_whole(std::size_t k) { ++whole_[k]; }
+  // Adds output face f as a piece of triangle k: false when it does not lie in it with its orientation.
   bool add(std::size_t k, const topology::Triangle& f) {
-    const PlaneTriangle& t = input_[k];
+    const PlaneTriangle& t = triangle(k);
     R3 r[3];
     for (int i = 0; i < 3; ++i) {
       if (!contains(t, pos_[f[i]])) return false;
@@ -187,64 +229,90 @@ class BoundaryTiling {
     const Rational a = projected_area(r[0], r[1], r[2], t.drop);
     if (sgn(a) != t.sign) return false;
     area_[k] += a;
+    ++pieces_[k];
     return true;
   }
-  bool fits(std::size_t k, const topology::Triangle& f) const {
-    const PlaneTriangle& t = input_[k];
+  bool fits(std::size_t k, const topology::Triangle& f) {
+    const PlaneTriangle& t = triangle(k);
     for (int i = 0; i < 3; ++i)
       if (!contains(t, pos_[f[i]])) return false;
     return true;
   }
-  // First input triangle whose pieces do not add up to its area, or SIZE_MAX.
-  std::size_t first_uncovered() const {
-    for (std::size_t k = 0; k < input_.size(); ++k)
-      if (area_[k] != input_[k].area) return k;
+  // First input triangle not covered exactly once (whole, or by pieces adding up to its area).
+  std::size_t first_uncovered() {
+    for (std::size_t k = 0; k < corners_.size(); ++k) {
+      const bool exactly = whole_[k] == 1 ? pieces_[k] == 0 : whole_[k] == 0 && area_[k] == triangle(k).area;
+      if (!exactly) return k;
+    }
     return SIZE_MAX;
   }
 
  private:
-  std::vector<PlaneTriangle> input_;
+  const PlaneTriangle& triangle(std::size_t k) {
+    if (!triangle_[k]) triangle_[k] = make_triangle(corners_[k][0], corners_[k][1], corners_[k][2]);
+    return *triangle_[k];
+  }
+
+  std::vector<std::array<HPoint, 3>> corners_;
   const std::vector<HPoint>& pos_;
+  std::vector<std::optional<PlaneTriangle>> triangle_;
   std::vector<Rational> area_;
+  std::vector<std::size_t> whole_, pieces_;
 };
 
 std::string face_text(const topology::Triangle& f) { return ids_text(f); }
+
+// A triangle rotated so that its smallest vertex comes first, keeping its orientation.
+topology::Triangle canonical(topology::Triangle t) {
+  std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  return t;
+}
+
+// Places output face f in an input triangle of both tilings; "" or what failed.
+std::string place_piece(const topology::Triangle& f, const std::vector<topology::BoundaryFace>& input_faces,
+                        const std::map<topology::VertexId, std::vector<std::size_t>>& incident, BoundaryTiling& in_target,
+                        BoundaryTiling& in_source) {
+  std::vector<std::size_t> candidates;
+  for (auto v : f)
+    if (auto it = incident.find(v); it != incident.end()) candidates.insert(candidates.end(), it->second.begin(), it->second.end());
+  if (candidates.empty())
+    for (std::size_t k = 0; k < input_faces.size(); ++k) candidates.push_back(k);
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  for (std::size_t k : candidates) {
+    if (!in_target.fits(k, f) || !in_source.fits(k, f)) continue;
+    if (!in_target.add(k, f) || !in_source.add(k, f))
+      return "output boundary face " + face_text(f) + " is reversed inside input boundary triangle " +
+             face_text(input_faces[k].face);
+    return {};
+  }
+  return "output boundary face " + face_text(f) + " lies in no input boundary triangle";
+}
 
 // The boundary-refinement part of verify_map; returns "" or what failed.
 std::string check_boundary(const VerificationInput& in, const std::vector<topology::Tet>& tets,
                            const std::vector<HPoint>& source, const std::vector<HPoint>& target,
                            const std::vector<HPoint>& prescribed_by_vertex) {
   const std::size_t n_in = in.source->size();
-  const topology::TetMesh input_mesh(n_in, *in.tets);
-  const auto input_faces = topology::boundary_faces(input_mesh);
-  std::vector<PlaneTriangle> tri_target, tri_source;
+  const auto input_faces = topology::boundary_faces(topology::TetMesh(n_in, *in.tets));
+  std::vector<std::array<HPoint, 3>> in_target_corners, in_source_corners;
   std::map<topology::VertexId, std::vector<std::size_t>> incident;
+  std::map<topology::Triangle, std::size_t> by_corners;
   for (std::size_t k = 0; k < input_faces.size(); ++k) {
     const auto& f = input_faces[k].face;
-    tri_target.push_back(make_triangle(prescribed_by_vertex[f[0]], prescribed_by_vertex[f[1]], prescribed_by_vertex[f[2]]));
-    tri_source.push_back(make_triangle((*in.source)[f[0]], (*in.source)[f[1]], (*in.source)[f[2]]));
+    in_target_corners.push_back({prescribed_by_vertex[f[0]], prescribed_by_vertex[f[1]], prescribed_by_vertex[f[2]]});
+    in_source_corners.push_back({(*in.source)[f[0]], (*in.source)[f[1]], (*in.source)[f[2]]});
     for (auto v : f) incident[v].push_back(k);
+    by_corners.emplace(canonical(f), k);
   }
-  BoundaryTiling in_target(std::move(tri_target), target), in_source(std::move(tri_source), source);
-  const topology::TetMesh output_mesh(target.size(), tets);
-  for (const auto& bf : topology::boundary_faces(output_mesh)) {
-    std::vector<std::size_t> candidates;
-    for (auto v : bf.face)
-      if (auto it = incident.find(v); it != incident.end()) candidates.insert(candidates.end(), it->second.begin(), it->second.end());
-    if (candidates.empty())
-      for (std::size_t k = 0; k < input_faces.size(); ++k) candidates.push_back(k);
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    bool placed = false;
-    for (std::size_t k : candidates) {
-      if (!in_target.fits(k, bf.face) || !in_source.fits(k, bf.face)) continue;
-      if (!in_target.add(k, bf.face) || !in_source.add(k, bf.face))
-        return "output boundary face " + face_text(bf.face) + " is reversed inside input boundary triangle " +
-               face_text(input_faces[k].face);
-      placed = true;
-      break;
+  BoundaryTiling in_target(std::move(in_target_corners), target), in_source(std::move(in_source_corners), source);
+  for (const auto& bf : topology::boundary_faces(topology::TetMesh(target.size(), tets))) {
+    if (const auto same = by_corners.find(canonical(bf.face)); same != by_corners.end()) {
+      in_target.add_whole(same->second);
+      in_source.add_whole(same->second);
+      continue;
     }
-    if (!placed) return "output boundary face " + face_text(bf.face) + " lies in no input boundary triangle";
+    if (std::string why = place_piece(bf.face, input_faces, incident, in_target, in_source); !why.empty()) return why;
   }
   if (std::size_t k = in_target.first_uncovered(); k != SIZE_MAX)
     return "prescribed boundary triangle " + face_text(input_faces[k].face) + " is not covered exactly";

@@ -5,6 +5,8 @@
 
 #include "../kernel/orient_cases.hpp"
 #include "algorithm/verify_map.hpp"
+#include "arith/rounding.hpp"
+#include "kernel/orient_exact.hpp"
 
 using namespace cmx;
 using namespace cmx::test;
@@ -60,4 +62,24 @@ TEST_CASE("the verifier's static filter steps aside where triple products would 
   }
   CHECK(disagreements == 0);
   CHECK(decided > 10000);
+}
+
+TEST_CASE("the verifier's interval filter on rational coordinates never disagrees with the exact sign") {
+  // Coordinates that are not doubles (decimals, thirds) take the interval path: near-coplanar
+  // quadruples moved off the plane by amounts near their enclosures' width.
+  Rng r(20261202);
+  int disagreements = 0, decided = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Quad q = on_plane(r, i % 3 == 0 ? 1e-3 : 1e3);
+    auto h = [&](const P3& p, int k) {
+      const Rational offset(Integer(int(r.below(7)) - 3), Integer(3) * (Integer(1) << (40 + 10 * (k % 3))));
+      return HPoint(rational_from_double(p[0]) + offset, rational_from_double(p[1]) - offset, rational_from_double(p[2]));
+    };
+    const HPoint a = h(q.a, i), b = h(q.b, i + 1), c = h(q.c, i + 2), d = h(q.d, i);
+    const Sign expected = orient3d_exact(a, b, c, d);
+    decided += expected != Sign::zero;
+    if (algorithm::verification_orient(a, b, c, d) != expected) ++disagreements;
+  }
+  CHECK(disagreements == 0);
+  CHECK(decided > 5000);
 }
