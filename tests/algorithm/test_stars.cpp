@@ -237,6 +237,25 @@ TEST_CASE("without free_defects the stars still satisfy the star conditions, but
   check_independently(m, grow(m));
 }
 
+TEST_CASE("star growth skips dead tet slots") {
+  InitialMap m = identity_map(6);
+  cmx::test::fold(m, {3, 3, 3}, 1.1, 0.3);
+  // Every tet of the fold's centre vertex moved to a new slot: their old slots are tombstones.
+  const topology::VertexId centre = 3 + 7 * (3 + 7 * 3);
+  const std::vector<topology::TetId> around(m.mesh().tets_of(centre).begin(), m.mesh().tets_of(centre).end());
+  for (topology::TetId t : around) {
+    const topology::Tet x = m.mesh().tet(t);
+    m.domain.mesh.remove_tet(t);
+    REQUIRE(m.domain.mesh.add_tet(x) != topology::invalid_index);
+  }
+  REQUIRE(m.mesh().tet_capacity() > m.mesh().num_tets());
+  const StarSet s = grow(m);
+  check_independently(m, s);
+  for (topology::TetId t : around) CHECK(s.states[t] == TetState::positive);
+  for (const Star& star : s.stars)
+    for (topology::TetId t : star.tets) CHECK(m.mesh().is_alive(t));
+}
+
 TEST_CASE("grow_stars refuses targets and flags of the wrong size") {
   const InitialMap m = identity_map(2);
   std::vector<HPoint> short_target(m.target.begin(), m.target.end() - 1);
