@@ -9,7 +9,9 @@
 #include "algorithm/collapse_pass.hpp"
 #include "algorithm/embedding.hpp"
 #include "algorithm/invariants.hpp"
+#include "algorithm/local/local_repair.hpp"
 #include "algorithm/merge_pass.hpp"
+#include "algorithm/output_statistics.hpp"
 #include "algorithm/preprocess.hpp"
 #include "algorithm/shelling_fallback.hpp"
 #include "algorithm/validate_problem.hpp"
@@ -43,19 +45,6 @@ double boundary_extent(const std::vector<HPoint>& points) {
   return std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
 }
 
-void output_statistics(const Embedding& e, MapResult& r) {
-  MapStatistics& s = r.stats;
-  s.output_vertices = e.num_vertices();
-  s.output_tets = e.mesh.num_tets();
-  s.growth_ratio = double(s.output_vertices) / double(s.input_vertices);
-  double total = 0;
-  for (const HPoint& p : e.target) {
-    s.max_bits = std::max(s.max_bits, p.bit_size());
-    total += double(p.bit_size());
-  }
-  s.mean_bits = e.target.empty() ? 0 : total / double(e.target.size());
-}
-
 // A non-exact run reads its input as a program in that arithmetic would: every coordinate
 // rounded to nearest. The rounded problem is what it maps and what its result is verified against;
 // the report counts the coordinates that moved. Returns that count.
@@ -77,7 +66,7 @@ void fill_output(const Embedding& e, MapResult& r) {
   for (TetId t : e.mesh.live_tets()) r.tets.push_back(e.mesh.tet(t));
   r.source = e.source;
   r.target = e.target;
-  output_statistics(e, r);
+  output_statistics(e.mesh.num_tets(), e.target, r.stats);
 }
 
 }  // namespace
@@ -233,7 +222,43 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
   throw PrecisionLost(std::move(loss));
 }
 
+// The local repair of an initial map (local/local_repair.hpp) when options.init asks for one:
+// true when it produced the result. It runs on exact coordinates only: the stars' boundaries are
+// the initial map's positions, which a rounded arithmetic would move.
+bool try_local(const MapProblem& problem, const ValidatedProblem& v, const MapOptions& options, RunControl& control,
+               MapResult& r) {
+  if (options.init == InitialMapKind::shrink) return false;
+  LocalRepairStatistics& ls = r.stats.local;
+  if (!options.placement.arith.exact()) {
+    if (options.init != InitialMapKind::automatic)
+      throw MapError(MapErrorKind::invalid_input, "an initial map (--init) needs exact coordinates (--arith rational)");
+    ls.fallback = "coordinates in " + to_string(options.placement.arith) + " (local repair needs exact ones)";
+    return false;
+  }
+  if (map_locally(problem, v, options, control, r)) return true;
+  ls.init = "shrink";
+  return false;
+}
+
 }  // namespace
+
+std::optional<InitialMapKind> parse_initial_map_kind(std::string_view name) {
+  if (name == "shrink") return InitialMapKind::shrink;
+  if (name == "tutte") return InitialMapKind::tutte;
+  if (name == "given") return InitialMapKind::given;
+  if (name == "auto") return InitialMapKind::automatic;
+  return std::nullopt;
+}
+
+const char* to_string(InitialMapKind kind) {
+  switch (kind) {
+    case InitialMapKind::shrink: return "shrink";
+    case InitialMapKind::tutte: return "tutte";
+    case InitialMapKind::given: return "given";
+    case InitialMapKind::automatic: return "auto";
+  }
+  return "?";
+}
 
 MapResult map_to_domain(const MapProblem& given, const MapOptions& options) {
   const auto start = Clock::now();
@@ -263,8 +288,12 @@ MapResult map_to_domain(const MapProblem& given, const MapOptions& options) {
       }
     }
     s.seconds_validate = seconds_since(start);
-    Embedding e = initial_embedding(v, options.filter, options.placement.arith, &s.filter);
     RunControl control(options, start);
+    if (try_local(problem, v, options, control, r)) {
+      s.seconds_total = seconds_since(start);
+      return r;
+    }
+    Embedding e = initial_embedding(v, options.filter, options.placement.arith, &s.filter);
     try {
       run_method(problem, v, options, start, control, e, r);
     } catch (const PrecisionLost&) {

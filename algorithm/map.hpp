@@ -33,7 +33,20 @@ struct MapProblem {
   std::vector<Point3> source;                 // one per vertex
   std::vector<std::uint32_t> boundary_vertices;
   std::vector<Point3> boundary_positions;     // boundary_positions[i] for boundary_vertices[i]
+  // For MapOptions::init = given: a target position per vertex (the interior positions of a
+  // codomain mesh, or a user's file); empty otherwise.
+  std::vector<Point3> initial_target;
 };
+
+// Where the target starts (cmx map --init). shrink: every interior vertex at the shrink point and
+// the whole cluster expanded (paper Alg. 1). tutte, given: an initial map (a 3D Tutte map, or
+// MapProblem::initial_target) whose non-positive tets are enclosed in stars, each star mapped by
+// the method of `shrink` as a problem of its own (algorithm/local/local_repair.hpp). automatic:
+// tutte, falling back to shrink when the stars would hold more than MapOptions::star_max_share of
+// the tets or the initial map cannot be made.
+enum class InitialMapKind : std::uint8_t { shrink, tutte, given, automatic };
+std::optional<InitialMapKind> parse_initial_map_kind(std::string_view name);
+const char* to_string(InitialMapKind kind);
 
 // What the progress callback gets. During the expansion: the cluster counts below. In later
 // phases ("collapse", "doubles", "verification"): done of total steps (total 0: unknown).
@@ -60,6 +73,7 @@ struct TraceRow {
   std::size_t degenerate_left = 0;   // tets with two or more cluster vertices
   std::size_t cluster_left = 0;
   double seconds = 0;
+  std::size_t star = 0;              // 0: the global method; k: the k-th star of a local repair
 };
 
 struct MapOptions {
@@ -81,8 +95,28 @@ struct MapOptions {
   // limit (outcome time_limit, or the phase's work undone where the time limit undoes it). For
   // cancelling a run (a signal, a GUI) and for cutting it at a reproducible point.
   std::function<bool(std::string_view phase)> stop;
-  // Called after every expansion when set (costs a pass over vertices and tets per row).
+  // Called after every expansion when set (costs a pass over vertices and tets per row). A local
+  // repair calls it after all stars are mapped, star by star, so the rows do not depend on threads.
   std::function<void(const TraceRow&)> trace;
+  InitialMapKind init = InitialMapKind::shrink;
+  // Local repair only: the shares of the tets above which `automatic` gives the stars up for the
+  // global method (stars holding more than star_max_share of them; an initial map with more than
+  // star_max_defect_share of them inverted or flat, decided before any growth), and how many
+  // stars are mapped at once (0: the machine's cores; the output is the same for every count).
+  double star_max_share = 0.5;
+  double star_max_defect_share = 0.05;        // automatic: defects above this share of the tets fall back at once
+  std::size_t threads = 0;
+};
+
+// What a local repair did (InitialMapKind tutte, given, automatic).
+struct LocalRepairStatistics {
+  const char* init = "shrink";                // the initial map used: shrink, tutte or given
+  std::string fallback;                       // automatic: why the global method ran instead ("" if it did not)
+  std::size_t inverted = 0, flat = 0;         // tets of the initial map
+  std::size_t stars = 0, star_tets_max = 0, tets_in_stars = 0;
+  double star_tets_mean = 0, share = 0;       // tets per star; share of the input tets re-mapped
+  std::size_t threads = 0;                    // stars mapped at once
+  double seconds_init = 0, seconds_classify_grow = 0, seconds_map_stars = 0, seconds_stitch = 0;
 };
 
 struct MapStatistics {
@@ -140,6 +174,7 @@ struct MapStatistics {
   double seconds_subcluster_search = 0;       // part of seconds_expand spent looking for subclusters
   double seconds_shelling_search = 0;         // after a NOBUENOSS (shelling_fallback.hpp)
   FilterStats filter;
+  LocalRepairStatistics local;
 };
 
 // precision_lost: a non-exact --arith (placement.arith) lost validity; MapResult::loss says where.

@@ -95,6 +95,12 @@ StarSet grow_stars(const topology::TetMesh& mesh, const std::vector<HPoint>& tar
     out.ok = true;
     return out;
   }
+  if (double(out.inverted + out.flat) > options.max_defect_share * double(mesh.num_tets())) {
+    out.message = std::to_string(out.inverted + out.flat) + " of " + std::to_string(mesh.num_tets()) +
+                  " tets of the initial map are inverted or flat, more than " +
+                  std::to_string(int(100 * options.max_defect_share + 0.5)) + " %";
+    return out;
+  }
   stars::StarGrowth g(mesh, target, boundary_vertex, options, out);
   for (TetId t : mesh.live_tets())
     if (out.states[t] != TetState::positive && !g.owned(t) && !g.grow_from(t)) {

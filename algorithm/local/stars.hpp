@@ -19,6 +19,9 @@ enum class TetState : std::uint8_t { positive, flat, inverted };
 
 struct StarOptions {
   double max_share = 0.5;          // stop (ok = false) once stars hold more than this share of the tets
+  // Stop (ok = false) before growing anything when more than this share of the tets are
+  // defects: such an initial map folds everywhere, and its stars would be most of the mesh.
+  double max_defect_share = 1.0;
   PlacementOptions placement;      // the LP backend of the kernel test
   RunControl* control = nullptr;   // polled between growth steps (phase "stars"); stop -> ok = false
   // Give every non-positive tet a vertex interior to its star (unless all four lie on the domain

@@ -296,7 +296,7 @@ TEST_CASE("the Tutte maps of the Galaxy Maps pairs are their parameter meshes an
     const io::TetMeshData parameter = io::read_tet_mesh(parameter_path, keep);
     const io::BoundaryPositions b =
         io::read_boundary_positions_from_codomain(mesh, parameter, parameter_path);
-    const MapProblem p{mesh.tets, mesh.positions, b.vertices, b.positions};
+    const MapProblem p{mesh.tets, mesh.positions, b.vertices, b.positions, {}};
     const InitialMap ours = tutte_map(p);
     check_solves_its_system(p, ours);
     const InitialMap theirs = given_map(p, parameter.positions);
