@@ -67,6 +67,7 @@ std::vector<std::string> output_paths(const MapArgs& a) {
 std::vector<std::string> input_paths(const MapArgs& a) {
   std::vector<std::string> paths = mesh_files(a.domain);
   if (!a.boundary.empty()) paths.push_back(a.boundary);
+  if (!a.init_file.empty()) paths.push_back(a.init_file);
   for (const std::string& p : a.codomain.empty() ? std::vector<std::string>{} : mesh_files(a.codomain)) paths.push_back(p);
   return paths;
 }
@@ -111,12 +112,13 @@ void write_outputs(const MapArgs& a, const algorithm::MapResult& r) {
 }
 
 constexpr const char* trace_header =
-    "step,kind,vertex,cone_rows,lp,bits,max_bits,mean_bits,added_vertices,degenerate_left,cluster_left,seconds\n";
+    "step,kind,vertex,cone_rows,lp,bits,max_bits,mean_bits,added_vertices,degenerate_left,cluster_left,seconds,star\n";
 
 std::string trace_line(const algorithm::TraceRow& r) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, "%zu,%s,%u,%zu,%s,%zu,%zu,%.2f,%zu,%zu,%zu,%.4f\n", r.step, r.kind, r.vertex, r.cone_rows,
-                r.lp, r.bits, r.max_bits, r.mean_bits, r.added_vertices, r.degenerate_left, r.cluster_left, r.seconds);
+  std::snprintf(buf, sizeof buf, "%zu,%s,%u,%zu,%s,%zu,%zu,%.2f,%zu,%zu,%zu,%.4f,%zu\n", r.step, r.kind, r.vertex,
+                r.cone_rows, r.lp, r.bits, r.max_bits, r.mean_bits, r.added_vertices, r.degenerate_left, r.cluster_left,
+                r.seconds, r.star);
   return buf;
 }
 
@@ -187,6 +189,7 @@ int load_problem(const MapArgs& a, algorithm::MapProblem& problem) {
   try {
     for (const std::string& p : input_paths(a)) check_readable(p);
     problem = load_map_problem(a.domain, a.boundary, a.codomain, a.shape, a.seed);
+    if (a.options.init == algorithm::InitialMapKind::given) load_initial_map(problem, a.init_file, a.codomain);
     return exit_ok;
   } catch (const io::IoError& e) {
     const bool mismatch = e.kind() == io::ErrorKind::mismatch;  // two inputs that do not fit together

@@ -114,6 +114,33 @@ void add_run_options(CLI::App& app, MapArgs& a) {
                "survives: paper Sec. 4.2.2)");
 }
 
+// --init and --threads: where the target starts, and how many stars are mapped at once.
+void add_local_options(CLI::App& app, MapArgs& a) {
+  const auto init = [&a](const std::string& text) {
+    if (const auto kind = algorithm::parse_initial_map_kind(text); kind && *kind != algorithm::InitialMapKind::given)
+      return *kind;
+    if (text == "codomain") return algorithm::InitialMapKind::given;
+    if (text.empty() || text == "given") throw std::invalid_argument(one_of("initial map", text, "auto, shrink, tutte, codomain, FILE"));
+    a.init_file = text;
+    return algorithm::InitialMapKind::given;
+  };
+  add_parsed(app, "--init", a.options.init, init,
+             "initial map (default auto): shrink = every interior vertex at the\n"
+             "shrink point, the whole cluster expanded (paper Alg. 1); tutte = a 3D\n"
+             "Tutte map whose non-positive tets are enclosed in stars, each star\n"
+             "mapped as a problem of its own by the shrink method, the rest kept;\n"
+             "codomain = the same from the --codomain mesh's interior positions;\n"
+             "FILE = from lines 'index x y z' for every vertex; auto = tutte, or\n"
+             "shrink when more than 5 % of the Tutte map's tets are inverted or\n"
+             "flat or its stars would hold more than half of the tets (the report's\n"
+             "'local' says which ran and why). A file named like a keyword: ./auto")
+      ->type_name("INIT");
+  add_parsed(app, "--threads", a.options.threads, [](const std::string& t) { return parse_integer(t, 0, 1024); },
+             "stars mapped at once (default 0: the machine's cores); the output is\n"
+             "the same for every count")
+      ->type_name("N");
+}
+
 void add_expansion_options(CLI::App& app, MapArgs& a) {
   add_parsed(app, "--subclusters", a.options.subclusters, [](const std::string& t) { return parse_integer(t, 0, 4); },
              "when no single vertex is simply expandable, try expanding N = 2..4\n"
@@ -185,11 +212,14 @@ std::optional<int> parse_map_args(const std::vector<std::string>& args, MapArgs&
   add_problem_options(app, a);
   add_output_options(app, a);
   add_run_options(app, a);
+  add_local_options(app, a);
   add_expansion_options(app, a);
   add_arithmetic_options(app, a);
   if (const auto done = line.parse(args)) return done;
   if (!a.boundary.empty() + !a.codomain.empty() + !a.shape.empty() != 1)
     usage_error("give exactly one of --boundary, --codomain, --shape");
+  if (a.options.init == algorithm::InitialMapKind::given && a.init_file.empty() && a.codomain.empty())
+    usage_error("--init codomain needs --codomain");
   return std::nullopt;
 }
 

@@ -11,10 +11,19 @@ namespace cmx::cli {
 
 struct MapArgs {
   std::string domain, boundary, codomain, shape, out, report, trace;
+  std::string init_file;             // --init FILE (options.init is then given)
   std::vector<std::string> formats;  // from --format (OUT's extension is added by the output plan)
   bool report_on_failure = false;    // a failed run may replace an existing report or trace
   std::uint64_t seed = 1234;
-  algorithm::MapOptions options;     // time limit, check and the method's choices
+  algorithm::MapOptions options = program_defaults();  // time limit, check and the method's choices
+
+  // The library's defaults, except the initial map: the program starts from `auto` (a Tutte map
+  // repaired locally where it folds, else the global method), the library from the paper's shrink.
+  static algorithm::MapOptions program_defaults() {
+    algorithm::MapOptions o;
+    o.init = algorithm::InitialMapKind::automatic;
+    return o;
+  }
 };
 
 // The formats cmx map writes.

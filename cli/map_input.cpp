@@ -3,6 +3,7 @@
 #include "algorithm/boundary_shapes.hpp"
 #include "arith/rounding.hpp"
 #include "io/boundary.hpp"
+#include "io/io_error.hpp"
 #include "io/read_mesh.hpp"
 #include "topology/ball_check.hpp"
 
@@ -47,6 +48,27 @@ algorithm::MapProblem load_map_problem(const std::string& domain_path, const std
   p.boundary_vertices = std::move(b.vertices);
   p.boundary_positions = std::move(b.positions);
   return p;
+}
+
+void load_initial_map(algorithm::MapProblem& p, const std::string& init_file, const std::string& codomain_path) {
+  const std::size_t n = p.source.size();
+  if (init_file.empty()) {
+    io::ReadOptions keep;
+    keep.orientation = io::Orientation::keep;
+    io::TetMeshData codomain = io::read_tet_mesh(codomain_path, keep);
+    if (codomain.positions.size() != n)
+      throw io::IoError(io::ErrorKind::mismatch, codomain_path, 0,
+                        std::to_string(codomain.positions.size()) + " vertices, the domain has " + std::to_string(n));
+    p.initial_target = std::move(codomain.positions);
+    return;
+  }
+  io::BoundaryPositions b = io::read_boundary_positions(init_file, n);
+  if (b.vertices.size() != n)
+    throw io::IoError(io::ErrorKind::mismatch, init_file, 0,
+                      "positions for " + std::to_string(b.vertices.size()) + " of " + std::to_string(n) +
+                          " vertices; an initial map needs one per vertex");
+  p.initial_target.assign(n, {});
+  for (std::size_t i = 0; i < n; ++i) p.initial_target[b.vertices[i]] = std::move(b.positions[i]);
 }
 
 }  // namespace cmx::cli

@@ -13,4 +13,9 @@ namespace cmx::cli {
 algorithm::MapProblem load_map_problem(const std::string& domain_path, const std::string& boundary_path,
                                        const std::string& codomain_path, const std::string& shape, std::uint64_t seed);
 
+// The initial map of --init FILE (lines 'index x y z' for every vertex) or, when init_file is
+// empty, --init codomain (every position of the codomain mesh) into p.initial_target. Throws
+// io::IoError: malformed, or (mismatch) not one position per vertex.
+void load_initial_map(algorithm::MapProblem& p, const std::string& init_file, const std::string& codomain_path);
+
 }  // namespace cmx::cli

@@ -26,8 +26,24 @@ JsonObject options_json(const MapArgs& a) {
   opt.flag("merge", o.collapse && o.merge);
   opt.flag("flip_collapse", o.collapse && o.merge && o.flip_collapse);
   opt.num("subclusters", n(o.subclusters < 2 ? 0 : o.subclusters));
+  opt.str("init", a.init_file.empty() ? algorithm::to_string(o.init) : a.init_file);
+  opt.num("threads", n(o.threads));
   opt.num("time_limit", o.time_limit_seconds);  // 0: none (parse_time_limit makes inf 0)
   return opt;
+}
+
+// The local repair: which initial map ran (or why the global method ran instead), the stars.
+JsonObject local_json(const algorithm::LocalRepairStatistics& l) {
+  JsonObject local;
+  local.str("init", l.init).str("fallback", l.fallback);
+  local.num("inverted", n(l.inverted)).num("flat", n(l.flat)).num("stars", n(l.stars));
+  local.num("star_tets_max", n(l.star_tets_max)).num("star_tets_mean", l.star_tets_mean);
+  local.num("tets_in_stars", n(l.tets_in_stars)).num("share", l.share).num("threads", n(l.threads));
+  JsonObject times;
+  times.num("initial_map", l.seconds_init).num("classify_and_grow", l.seconds_classify_grow);
+  times.num("map_stars", l.seconds_map_stars).num("stitch", l.seconds_stitch);
+  local.obj("seconds", times);
+  return local;
 }
 
 JsonObject preprocess_json(const algorithm::MapResult& r) {
@@ -154,7 +170,8 @@ JsonObject report_json(const MapArgs& a, const algorithm::MapResult* r, const st
   bits.num("max", n(s.max_bits)).num("mean", s.mean_bits);
   rusage usage{};
   if (getrusage(RUSAGE_SELF, &usage) == 0) j.num("peak_rss_kb", std::uint64_t(usage.ru_maxrss));  // Linux: KiB
-  j.obj("input", in).obj("preprocess", preprocess_json(*r)).obj("expansion", expansion_json(s));
+  j.obj("input", in).obj("local", local_json(s.local)).obj("preprocess", preprocess_json(*r));
+  j.obj("expansion", expansion_json(s));
   j.obj("double_output", double_output_json(*r)).obj("output", out).obj("bits", bits);
   j.obj("seconds", seconds_json(s)).obj("predicates", predicates_json(s)).obj("verdict", verdict_json(*r));
   if (r->loss) j.obj("precision_loss", loss_json(*r->loss));

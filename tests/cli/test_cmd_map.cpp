@@ -120,18 +120,18 @@ TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
   const Case c = make_case("grid:3,3,3", "stiff-tet");
   const std::string trace = c.dir + "/t.csv", svg = c.dir + "/t.svg";
   const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", c.dir + "/out", "--trace", trace, "--report",
-                          c.dir + "/r.json", "--quiet"});
+                          c.dir + "/r.json", "--init", "shrink", "--quiet"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   std::istringstream in(file_text(trace));
   std::string line;
   REQUIRE(std::getline(in, line));
-  CHECK(line == "step,kind,vertex,cone_rows,lp,bits,max_bits,mean_bits,added_vertices,degenerate_left,cluster_left,seconds");
+  CHECK(line == "step,kind,vertex,cone_rows,lp,bits,max_bits,mean_bits,added_vertices,degenerate_left,cluster_left,seconds,star");
   std::size_t rows = 0;
   std::string last;
   while (std::getline(in, line)) {
     ++rows;
-    CHECK(std::count(line.begin(), line.end(), ',') == 11);
+    CHECK(std::count(line.begin(), line.end(), ',') == 12);
     last = line;
   }
   // One row per expansion: the report's simple + star-shapified + automatic expansions.
@@ -151,9 +151,10 @@ TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
     for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
     return out;
   }();
-  REQUIRE(cells.size() == 12);
+  REQUIRE(cells.size() == 13);
   CHECK(cells[9] == "0");
   CHECK(cells[10] == "0");
+  CHECK(cells[12] == "0");  // the global method: no star
 
   const auto p = run_cmx({"plot", trace, "-o", svg});
   INFO(p.err);
