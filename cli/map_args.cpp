@@ -132,7 +132,7 @@ void add_local_options(CLI::App& app, MapArgs& a) {
              "codomain = the same from the --codomain mesh's interior positions;\n"
              "FILE = from lines 'index x y z' for every vertex; auto = tutte, or\n"
              "shrink when more than 5 % of the Tutte map's tets are inverted or\n"
-             "flat or its stars would hold more than half of the tets (the report's\n"
+             "flat in doubles or its stars would hold more than half of the tets (the report's\n"
              "'local' says which ran and why). A file named like a keyword: ./auto")
       ->type_name("INIT");
   add_parsed(app, "--threads", a.options.threads, [](const std::string& t) { return parse_integer(t, 0, 1024); },

@@ -13,6 +13,7 @@
 #include "algorithm/map_error.hpp"
 #include "algorithm/output_statistics.hpp"
 #include "arith/rounding.hpp"
+#include "kernel/orient.hpp"
 #include "topology/complex_queries.hpp"
 
 namespace cmx::algorithm {
@@ -255,7 +256,20 @@ void star_statistics(const StarSet& stars, std::size_t input_tets, LocalRepairSt
   ls.share = input_tets ? double(stars.tets_in_stars) / double(input_tets) : 0;
 }
 
-// The initial map, or nullopt with the reason in `why`.
+// Tets of `tets` not positive in the doubles nearest to `target` (signs exact for those doubles).
+std::size_t folded_in_doubles(const std::vector<Tet>& tets, const std::vector<Point3>& target) {
+  std::vector<std::array<double, 3>> at;
+  at.reserve(target.size());
+  for (const Point3& p : target) at.push_back({to_double(p[0]), to_double(p[1]), to_double(p[2])});
+  std::size_t folded = 0;
+  for (const Tet& t : tets)
+    folded += orient3d(at[t[0]].data(), at[t[1]].data(), at[t[2]].data(), at[t[3]].data()) != Sign::positive;
+  return folded;
+}
+
+// The initial map, or nullopt with the reason in `why`. automatic: also nullopt when the map folds
+// more than star_max_defect_share of the tets in doubles. That decision needs no exact signs, and
+// the exact classification of a map that folds everywhere costs as much as solving it.
 std::optional<std::vector<HPoint>> initial_target(const MapProblem& problem, const MapOptions& options,
                                                   LocalRepairStatistics& ls, std::string& why) {
   const InitialMap m = options.init == InitialMapKind::given ? given_map(problem, problem.initial_target)
@@ -265,6 +279,15 @@ std::optional<std::vector<HPoint>> initial_target(const MapProblem& problem, con
   if (!m.ok) {
     why = "the initial map could not be made: " + m.message;
     return std::nullopt;
+  }
+  if (options.init == InitialMapKind::automatic) {
+    const std::size_t folded = folded_in_doubles(problem.tets, m.target);
+    if (double(folded) > options.star_max_defect_share * double(problem.tets.size())) {
+      why = std::to_string(folded) + " of " + std::to_string(problem.tets.size()) +
+            " tets of the initial map are inverted or flat in doubles, more than " +
+            std::to_string(int(100 * options.star_max_defect_share + 0.5)) + " %";
+      return std::nullopt;
+    }
   }
   std::vector<HPoint> target;
   target.reserve(m.target.size());

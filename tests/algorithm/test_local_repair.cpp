@@ -121,6 +121,7 @@ TEST_CASE("auto falls back to the global method when the stars would be too larg
   MapOptions o;
   o.init = InitialMapKind::automatic;
   o.star_max_share = 1e-6;  // no star is that small
+  o.star_max_defect_share = 1.0;  // past the test in doubles, to the stars
   const MapResult r = map_to_domain(p, o);
   check_verified(r);
   REQUIRE(r.stats.local.inverted + r.stats.local.flat > 0);  // the Tutte map folds on this target
@@ -129,6 +130,23 @@ TEST_CASE("auto falls back to the global method when the stars would be too larg
   const MapResult global = map_to_domain(p);
   CHECK(r.tets == global.tets);
   CHECK(r.target == global.target);
+}
+
+TEST_CASE("auto falls back before any exact classification when the Tutte map folds too much in doubles") {
+  const MapProblem p = problem_from(voxel_ball(4, 2), "star:5");
+  MapOptions o;
+  o.init = InitialMapKind::automatic;
+  o.star_max_defect_share = 0;  // any fold is too many
+  const MapResult r = map_to_domain(p, o);
+  check_verified(r);
+  CHECK(std::string(r.stats.local.init) == "shrink");
+  CHECK(r.stats.local.inverted + r.stats.local.flat == 0);  // not classified exactly
+  CHECK(r.stats.local.fallback.find("in doubles, more than 0 %") != std::string::npos);
+  o.star_max_defect_share = 1.0;
+  o.star_max_share = 1.0;
+  const MapResult local = map_to_domain(p, o);
+  check_verified(local);
+  CHECK(std::string(local.stats.local.init) == "tutte");  // the same map passes a looser share
 }
 
 TEST_CASE("an explicit initial map needs exact coordinates, and one of the right size") {
