@@ -133,6 +133,12 @@ std::vector<VertexId> crowd_around_center(const Embedding& e) {
   return out;
 }
 
+double innermost_log2_distance(const Embedding& e, const std::vector<VertexId>& crowd) {
+  double out = std::numeric_limits<double>::infinity();
+  for (VertexId v : crowd) out = std::min(out, log2_distance(e.center, e.target[v]));
+  return out;
+}
+
 std::size_t sweep_crowd(Embedding& e, const std::vector<VertexId>& crowd, const PlacementOptions& options,
                         std::size_t& lps) {
   std::vector<std::pair<double, VertexId>> order;

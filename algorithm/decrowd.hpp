@@ -35,6 +35,11 @@ std::size_t scale_crowds(Embedding& e);
 // in scale_crowds: log2 of the largest coordinate difference).
 std::vector<VertexId> crowd_around_center(const Embedding& e);
 
+// log2 of the distance from p_c of the innermost vertex of `crowd` (-infinity when one sits on
+// p_c, +infinity for an empty crowd): a sweep that raises it opens the crowd even while the
+// doubles' bad tets stay as many.
+double innermost_log2_distance(const Embedding& e, const std::vector<VertexId>& crowd);
+
 // One sweep: each vertex of `crowd`, in decreasing distance from p_c (then by id), moves to the
 // precision-reduced Chebyshev centre of its star's kernel. Returns the vertices moved; adds the
 // LPs solved to `lps`.

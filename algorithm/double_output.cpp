@@ -251,8 +251,9 @@ std::vector<std::pair<VertexId, std::array<double, 3>>> reround_boundary(const E
   return changed;
 }
 
-// The sweeps of one pass (below): until the doubles are valid, 300 sweeps, or 10 sweeps without
-// fewer bad tets; the crowd keeps the positions of the best sweep (a sweep can make the doubles
+// The sweeps of one pass (below): until the doubles are valid, 300 sweeps, or 10 sweeps in which
+// neither the bad tets fell nor the innermost vertex moved out by a factor 2 (a deep funnel
+// opens for many sweeps before its bad tets fall); the crowd keeps the positions of the best sweep (a sweep can make the doubles
 // worse, measured on the polycube bird).
 template <class Rescan>
 void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vector<VertexId>& crowd,
@@ -266,6 +267,7 @@ void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vecto
   constexpr std::size_t cap = 300, patience = 10;
   std::vector<HPoint> best_positions = positions();
   std::size_t best = bad_tets(now.check), stale = 0;
+  double deepest = innermost_log2_distance(e, crowd);  // progress too: the crowd opening
   for (std::size_t sweeps = 0; sweeps < cap && stale < patience && !now.check.valid() && !passed(control);) {
     ++sweeps, ++out.crowd_sweeps;
     const std::size_t moved = sweep_crowd(e, crowd, options, out.lps);
@@ -275,6 +277,8 @@ void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vecto
     if (bad_tets(now.check) < best) {
       best = bad_tets(now.check), stale = 0;
       best_positions = positions();
+    } else if (const double d = innermost_log2_distance(e, crowd); d >= deepest + 1) {
+      deepest = d, stale = 0;  // the innermost vertex moved out by a factor 2 at least
     } else {
       ++stale;
     }

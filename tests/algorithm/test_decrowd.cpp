@@ -119,9 +119,15 @@ TEST_CASE("a sweep re-centres a vertex pushed into p_c back out, outermost first
   REQUIRE(all_positive(e));
   const std::vector<VertexId> crowd = crowd_around_center(e);
   CHECK(std::find(crowd.begin(), crowd.end(), *pushed) != crowd.end());
+  // The sweeps' second measure of progress (double_output.cpp): the innermost vertex's distance.
+  const double innermost = innermost_log2_distance(e, crowd);
+  CHECK(innermost < -250);
+  CHECK(innermost >= std::log2(distance_from_center(e, *pushed)) - 1);
   std::size_t lps = 0;
   CHECK(sweep_crowd(e, crowd, {}, lps) >= 1);
   CHECK(lps == crowd.size());
   CHECK(distance_from_center(e, *pushed) > 1e-6);
+  CHECK(innermost_log2_distance(e, crowd) > innermost + 200);
   CHECK(all_positive(e));
+  CHECK(std::isinf(innermost_log2_distance(e, {})));
 }
