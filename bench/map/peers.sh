@@ -50,7 +50,7 @@ cmx_case() {  # name domain option input -> "rc seconds growth doubles checker"
   local growth dv check
   growth=$(python3 -c "import json,sys;print(round(json.load(open(sys.argv[1]))['output']['growth_ratio'],4))" "$report")
   dv=$(python3 "$tools/verify_doubles.py" "$out/$name.vtk" 2>/dev/null |
-       python3 -c "import json,sys;r=json.loads(sys.stdin.read());print('valid' if r['valid'] else '%d bad' % (r['inverted']+r['degenerate']))" 2>/dev/null)
+       python3 -c "import json,sys;r=json.loads(sys.stdin.read());print('valid' if r['valid'] else '%d-bad' % (r['inverted']+r['degenerate']))" 2>/dev/null)
   check=$(python3 "$tools/verify_tmap.py" "$domain" "$input" "$out/$name.tmap" 2>/dev/null |
           python3 -c "import json,sys;print('valid' if json.loads(sys.stdin.read())['valid'] else 'INVALID')" 2>/dev/null)
   if [ "$check" != valid ] && python3 "$here/bench/map/exact_orientation.py" "$out/$name.tmap" >/dev/null 2>&1; then
@@ -69,7 +69,7 @@ gm_case() {  # name object parameter input-vertices -> "rc seconds growth double
   local growth dv
   growth=$(python3 -c "print(round($(points "${prefix}_parameter.vtk") / $n, 4))")
   dv=$(python3 "$tools/verify_doubles.py" "${prefix}_parameter.vtk" --negative 2>/dev/null |
-       python3 -c "import json,sys;r=json.loads(sys.stdin.read());print('valid' if r['valid'] else '%d bad' % (r['inverted']+r['degenerate']))" 2>/dev/null)
+       python3 -c "import json,sys;r=json.loads(sys.stdin.read());print('valid' if r['valid'] else '%d-bad' % (r['inverted']+r['degenerate']))" 2>/dev/null)
   echo "$rc $sec $growth ${dv:-error}"
 }
 
