@@ -253,8 +253,8 @@ std::vector<std::pair<VertexId, std::array<double, 3>>> reround_boundary(const E
 
 // The sweeps of one pass (below): until the doubles are valid, 300 sweeps, or 10 sweeps in which
 // neither the bad tets fell nor the innermost vertex moved out by a factor 2 (a deep funnel
-// opens for many sweeps before its bad tets fall); the crowd keeps the positions of the best sweep (a sweep can make the doubles
-// worse, measured on the polycube bird).
+// opens for many sweeps before its bad tets fall); the crowd keeps the positions of the best
+// sweep (a sweep can make the doubles worse, measured on the polycube bird).
 template <class Rescan>
 void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vector<VertexId>& crowd,
                        const PlacementOptions& options, RunControl* control, Rescan rescan) {
