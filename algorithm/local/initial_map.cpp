@@ -181,7 +181,7 @@ std::vector<char> boundary_flags(const MapProblem& p) {
 
 }  // namespace
 
-InitialMap tutte_map(const MapProblem& problem) {
+InitialMap tutte_map(const MapProblem& problem, bool exact) {
   const Clock::time_point start = Clock::now();
   std::string why = boundary_list_error(problem);
   if (why.empty()) why = tet_index_error(problem);
@@ -191,7 +191,8 @@ InitialMap tutte_map(const MapProblem& problem) {
   const EdgeAdjacency adj = edge_adjacency(problem.tets, n);
   why = unreachable_error(adj, boundary);
   if (!why.empty()) return failed(why, start);
-  const std::vector<std::array<double, 3>> prescribed = prescribed_doubles(problem, why);
+  InitialMap out;
+  out.doubles = prescribed_doubles(problem, why);
   if (!why.empty()) return failed(why, start);
 
   std::vector<std::uint32_t> interior, slot(n, not_interior);
@@ -204,20 +205,25 @@ InitialMap tutte_map(const MapProblem& problem) {
     return failed("too many interior vertices for the sparse solver: " + std::to_string(interior.size()),
                   start);
   Eigen::MatrixX3d x;
-  if (!interior.empty() && !solve_laplacian(adj, interior, slot, prescribed, x, why))
+  if (!interior.empty() && !solve_laplacian(adj, interior, slot, out.doubles, x, why))
     return failed(why, start);
-
-  InitialMap out;
-  out.target.resize(n);
-  for (std::size_t i = 0; i < problem.boundary_vertices.size(); ++i)
-    out.target[problem.boundary_vertices[i]] = problem.boundary_positions[i];
   for (std::size_t r = 0; r < interior.size(); ++r)
-    for (int k = 0; k < 3; ++k)
-      out.target[interior[r]][k] = rational_from_double(x(static_cast<Eigen::Index>(r), k));
+    for (int k = 0; k < 3; ++k) out.doubles[interior[r]][k] = x(static_cast<Eigen::Index>(r), k);
   out.ok = true;
   out.interior = interior.size();
+  if (exact) exact_target(problem, out);
   out.seconds = seconds_since(start);
   return out;
+}
+
+void exact_target(const MapProblem& problem, InitialMap& m) {
+  const std::vector<char> boundary = boundary_flags(problem);
+  m.target.assign(m.doubles.size(), Point3{});
+  for (std::size_t i = 0; i < problem.boundary_vertices.size(); ++i)
+    m.target[problem.boundary_vertices[i]] = problem.boundary_positions[i];
+  for (std::size_t v = 0; v < m.doubles.size(); ++v)
+    if (!boundary[v])
+      for (int k = 0; k < 3; ++k) m.target[v][k] = rational_from_double(m.doubles[v][k]);
 }
 
 InitialMap given_map(const MapProblem& problem, std::vector<Point3> positions) {

@@ -2,6 +2,7 @@
 // Initial maps for the local repair: a target position for every vertex, from which the repair
 // finds the non-positive tets and re-maps only stars around them (docs/algorithm.md, "Initial
 // maps"). Eigen solves the Tutte system; it is included only in initial_map.cpp, never here.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -13,7 +14,10 @@ namespace cmx::algorithm {
 // rationals they are), boundary vertices at their prescribed positions. Tets may be inverted or flat.
 struct InitialMap {
   bool ok = false;
-  std::vector<Point3> target;  // one per vertex of the problem
+  std::vector<Point3> target;  // one per vertex of the problem (empty when not asked for exactly)
+  // The same map in doubles (tutte_map only): the solution for interior vertices, the prescribed
+  // positions rounded to nearest for boundary vertices. Exactly the doubles nearest to `target`.
+  std::vector<std::array<double, 3>> doubles;
   // Why not ok (singular system, non-finite solution, ...). When ok: empty, or a note that
   // given_map set boundary vertices to their prescribed positions.
   std::string message;
@@ -32,7 +36,13 @@ struct InitialMap {
 // Also not ok: boundary lists of different sizes, an index out of range or repeated, a tet
 // vertex out of range, a prescribed coordinate beyond the doubles, a failed factorisation or a
 // non-finite solution. Interior vertices are numbered in vertex order, edges in sorted order.
-InitialMap tutte_map(const MapProblem& problem);
+// With exact = false only `doubles` is filled: a caller that may reject the map from its doubles
+// (cmx map --init auto) then pays for no rational until it keeps the map (exact_target).
+InitialMap tutte_map(const MapProblem& problem, bool exact = true);
+
+// Fills m.target from m.doubles: interior vertices at their doubles taken exactly, boundary
+// vertices at their prescribed positions. Pre: m from tutte_map(problem, false), m.ok.
+void exact_target(const MapProblem& problem, InitialMap& m);
 
 // A user-given initial map (cmx map --init FILE, or --init codomain: the codomain mesh's interior
 // positions): checks that `positions` has one entry per vertex (problem.source.size()), and that

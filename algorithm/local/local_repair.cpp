@@ -256,38 +256,38 @@ void star_statistics(const StarSet& stars, std::size_t input_tets, LocalRepairSt
   ls.share = input_tets ? double(stars.tets_in_stars) / double(input_tets) : 0;
 }
 
-// Tets of `tets` not positive in the doubles nearest to `target` (signs exact for those doubles).
-std::size_t folded_in_doubles(const std::vector<Tet>& tets, const std::vector<Point3>& target) {
-  std::vector<std::array<double, 3>> at;
-  at.reserve(target.size());
-  for (const Point3& p : target) at.push_back({to_double(p[0]), to_double(p[1]), to_double(p[2])});
+// Tets of `tets` not positive in the doubles `at` (signs exact for those doubles).
+std::size_t folded_in_doubles(const std::vector<Tet>& tets, const std::vector<std::array<double, 3>>& at) {
   std::size_t folded = 0;
   for (const Tet& t : tets)
     folded += orient3d(at[t[0]].data(), at[t[1]].data(), at[t[2]].data(), at[t[3]].data()) != Sign::positive;
   return folded;
 }
 
-// The initial map, or nullopt with the reason in `why`. automatic: also nullopt when the map folds
-// more than star_max_defect_share of the tets in doubles. That decision needs no exact signs, and
-// the exact classification of a map that folds everywhere costs as much as solving it.
+// The initial map, or nullopt with the reason in `why`. automatic: also nullopt when the Tutte
+// map folds more than star_max_defect_share of the tets in doubles. That decision needs no exact
+// signs and no rationals (the exact classification of a map that folds everywhere costs as much
+// as solving it), so the map is taken exactly only once it is kept.
 std::optional<std::vector<HPoint>> initial_target(const MapProblem& problem, const MapOptions& options,
                                                   LocalRepairStatistics& ls, std::string& why) {
-  const InitialMap m = options.init == InitialMapKind::given ? given_map(problem, problem.initial_target)
-                                                             : tutte_map(problem);
+  const bool automatic = options.init == InitialMapKind::automatic;
+  InitialMap m = options.init == InitialMapKind::given ? given_map(problem, problem.initial_target)
+                                                       : tutte_map(problem, !automatic);
   ls.init = options.init == InitialMapKind::given ? "given" : "tutte";
   ls.seconds_init = m.seconds;
   if (!m.ok) {
     why = "the initial map could not be made: " + m.message;
     return std::nullopt;
   }
-  if (options.init == InitialMapKind::automatic) {
-    const std::size_t folded = folded_in_doubles(problem.tets, m.target);
+  if (automatic) {
+    const std::size_t folded = folded_in_doubles(problem.tets, m.doubles);
     if (double(folded) > options.star_max_defect_share * double(problem.tets.size())) {
       why = std::to_string(folded) + " of " + std::to_string(problem.tets.size()) +
             " tets of the initial map are inverted or flat in doubles, more than " +
             std::to_string(int(100 * options.star_max_defect_share + 0.5)) + " %";
       return std::nullopt;
     }
+    exact_target(problem, m);
   }
   std::vector<HPoint> target;
   target.reserve(m.target.size());

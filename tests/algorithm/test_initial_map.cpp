@@ -312,3 +312,19 @@ TEST_CASE("the Tutte maps of the Galaxy Maps pairs are their parameter meshes an
     CHECK(bad == non_positive_tets(p, theirs.target));
   }
 }
+
+TEST_CASE("tutte_map without the exact map gives the same doubles, and exact_target the same rationals") {
+  const MapProblem p = sphere_problem(4, 3);
+  const InitialMap full = tutte_map(p);
+  InitialMap lean = tutte_map(p, false);
+  REQUIRE(full.ok);
+  REQUIRE(lean.ok);
+  CHECK(lean.target.empty());
+  CHECK(lean.doubles == full.doubles);
+  // The doubles are the exact map rounded to nearest: exact for interior vertices.
+  for (std::size_t v = 0; v < p.source.size(); ++v)
+    for (int k = 0; k < 3; ++k) REQUIRE(full.doubles[v][k] == to_double(full.target[v][k]));
+  exact_target(p, lean);
+  CHECK(lean.target == full.target);
+  CHECK(boundary_exactly_prescribed(p, lean.target));
+}
