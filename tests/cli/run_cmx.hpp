@@ -22,6 +22,8 @@
 #include <string>
 #include <vector>
 
+#include "scratch.hpp"
+
 namespace cmx::test {
 
 struct RunResult {
@@ -131,11 +133,10 @@ inline std::string file_text(const std::string& path) {
   return s.str();
 }
 
-// Writes `content` to a fresh file in the temporary directory and returns its path. The file
-// stays (tests are short-lived; the OS cleans TMPDIR).
+// Writes `content` to a fresh file in the process's scratch directory (scratch.hpp: removed at
+// exit) and returns its path.
 inline std::string write_temp_file(const std::string& content, const std::string& suffix = ".txt") {
-  const char* dir = std::getenv("TMPDIR");
-  std::string pattern = std::string(dir && *dir ? dir : "/tmp") + "/cmx_test_XXXXXX" + suffix;
+  std::string pattern = (scratch_directory() / ("XXXXXX" + suffix)).string();
   std::vector<char> name(pattern.begin(), pattern.end());
   name.push_back('\0');
   const int fd = mkstemps(name.data(), int(suffix.size()));
@@ -145,7 +146,7 @@ inline std::string write_temp_file(const std::string& content, const std::string
   return name.data();
 }
 
-// A new empty directory in the temporary directory.
+// A new empty directory in the process's scratch directory.
 inline std::string fresh_directory() {
   const std::string path = write_temp_file("", "");
   std::filesystem::remove(path);

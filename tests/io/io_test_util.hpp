@@ -11,17 +11,14 @@
 
 #include "io/io_error.hpp"
 #include "io/tet_mesh_data.hpp"
+#include "scratch.hpp"
 
 namespace cmx::io::test {
 
-// A fresh directory under TMPDIR (or /tmp), unique per call.
+// A fresh directory, unique per call, in the process's scratch directory (scratch.hpp: removed
+// at exit).
 inline std::filesystem::path temp_dir() {
-  const char* base = std::getenv("TMPDIR");
-  std::string pattern = std::string(base && *base ? base : "/tmp") + "/cmx_io_test_XXXXXX";
-  std::vector<char> name(pattern.begin(), pattern.end());
-  name.push_back('\0');
-  REQUIRE(mkdtemp(name.data()) != nullptr);
-  return name.data();
+  return cmx::test::make_unique_directory(cmx::test::scratch_directory(), "io_");
 }
 
 inline std::string write_text(const std::filesystem::path& path, const std::string& content) {
