@@ -43,7 +43,8 @@ struct MapProblem {
 // MapProblem::initial_target) whose non-positive tets are enclosed in stars, each star mapped by
 // the method of `shrink` as a problem of its own (algorithm/local/local_repair.hpp). automatic:
 // tutte, falling back to shrink when the stars would hold more than MapOptions::star_max_share of
-// the tets or the initial map cannot be made.
+// the tets or the initial map cannot be made; and shrink after tutte when the stars' stitched
+// doubles are not a valid map (its result kept only if its doubles are valid).
 enum class InitialMapKind : std::uint8_t { shrink, tutte, given, automatic };
 std::optional<InitialMapKind> parse_initial_map_kind(std::string_view name);
 const char* to_string(InitialMapKind kind);

@@ -125,3 +125,31 @@ TEST_CASE("cmx map --init: bad values, a short file and codomain without --codom
   r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "--init", short_file, "--report", short_file});
   CHECK(r.exit_code == 2);
 }
+
+TEST_CASE("cmx map: auto runs the global method when the stars' stitched doubles are not valid") {
+  // One of the project's generated dataset cases (bench/dataset/generate.sh: ball_7_s2_stiff-tet):
+  // its stars' doubles leave 2 tets inverted, the global method's are valid.
+  Case c;
+  c.dir = fresh_directory();
+  c.mesh = c.dir + "/domain.vtk";
+  c.boundary = c.dir + "/boundary.txt";
+  REQUIRE(run_cmx({"generate-mesh", "--shape", "ball:7", "--perturb", "2", "-o", c.mesh, "-q"}).exit_code == 0);
+  REQUIRE(run_cmx({"boundary", c.mesh, "--shape", "stiff-tet", "-o", c.boundary, "-q"}).exit_code == 0);
+  std::string report[2];
+  for (int k = 0; k < 2; ++k) {
+    const std::string out = c.dir + (k ? "/auto" : "/tutte");
+    const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "--init", k ? "auto" : "tutte", "-o", out,
+                            "--report", out + ".json", "-q"});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    report[k] = file_text(out + ".json");
+    CHECK(field(report[k], "exact_valid") == "true");
+  }
+  // The explicit choice keeps the local repair's doubles; auto leaves them for the global method's.
+  const auto local = [](const std::string& text) { return text.substr(text.find("\"local\": {")); };
+  CHECK(field(local(report[0]), "init") == "\"tutte\"");
+  CHECK(field(report[0], "double_valid") == "false");
+  CHECK(field(local(report[1]), "init") == "\"shrink\"");
+  CHECK(field(report[1], "double_valid") == "true");
+  CHECK(field(report[1], "fallback").find("stitched doubles leave 2 tets inverted or flat") != std::string::npos);
+}
