@@ -1,6 +1,7 @@
 // Fuzz target: decodes bytes into four points and asserts that every tier that decides agrees
 // with the exact homogeneous determinant, under every policy, on raw doubles and on HPoints, and
-// that odd permutations flip the sign. NaN/Inf must throw std::domain_error (never a sign).
+// that odd permutations flip the sign; the header-only kernel (kernel/orient_standalone.hpp) too.
+// NaN/Inf must throw std::domain_error (never a sign).
 //
 // Input layout: byte 0 selects the mode; then 12 coordinates.
 //   mode even: 12 doubles, each from 9 bytes: a selector byte picks a special value
@@ -22,6 +23,7 @@
 #include "kernel/orient_exact.hpp"
 #include "kernel/orient_interval.hpp"
 #include "kernel/orient_semistatic.hpp"
+#include "kernel/orient_standalone.hpp"
 
 using namespace cmx;
 
@@ -84,6 +86,11 @@ void check_doubles(Reader& r) {
       } catch (const std::domain_error&) {
       }
     }
+    try {
+      (void)standalone::orient3d(a, b, c, d);
+      fail("NaN/Inf input returned a sign (header-only orient3d)");
+    } catch (const std::domain_error&) {
+    }
     return;
   }
   const HPoint ha = HPoint::from_doubles(a[0], a[1], a[2]), hb = HPoint::from_doubles(b[0], b[1], b[2]);
@@ -98,10 +105,12 @@ void check_doubles(Reader& r) {
   if (auto s = semistatic::orient3d(a, b, c, d); s && *s != exact) fail("semi-static filter");
   if (auto s = orient3d_interval(a, b, c, d); s && *s != exact) fail("interval tier");
   if (adaptive::in_adaptive_range(p, 12) && adaptive::orient3d(a, b, c, d, nullptr) != exact) fail("adaptive");
+  if (standalone::orient3d(a, b, c, d) != exact) fail("header-only orient3d");
   const Sign e2 = orient2d_exact(ha, hb, hc);
   if (cmx::orient2d(ha, hb, hc) != e2) fail("orient2d cascade");
   const double a2[2] = {a[0], a[1]}, b2[2] = {b[0], b[1]}, c2[2] = {c[0], c[1]};
   if (cmx::orient2d(a2, b2, c2) != e2) fail("orient2d cascade (doubles)");
+  if (standalone::orient2d(a2, b2, c2) != e2) fail("header-only orient2d");
 }
 
 void check_rationals(Reader& r) {
