@@ -4,9 +4,9 @@
 // kernel/orient.hpp: the semi-static filter, then Shewchuk's adaptive stages, and for
 // coordinates outside their range ([2^-250, 2^250] in magnitude) an exact determinant on
 // Boost.Multiprecision's cpp_int (the coordinates scaled to integers) where the compiled kernel
-// uses GMP. Every sign is exact;
-// tests/kernel_standalone checks that they equal the GMP build's on the kernel's differential
-// data, and bench/kernel measures what the exact tier costs against GMP.
+// uses GMP. Every sign is exact: tests/kernel/test_orient_standalone.cpp checks that they equal
+// the GMP build's on the kernel's differential data (fuzz/fuzz_orient3d.cpp against the exact
+// determinant), and bench/kernel/bench_standalone.cpp measures what the exact tier costs.
 //
 //   #include "kernel/orient_standalone.hpp"
 //   const double a[3] = {0, 0, 0}, b[3] = {1, 0, 0}, c[3] = {0, 1, 0}, d[3] = {0, 0, 1};
