@@ -15,6 +15,7 @@ packages=(
   libbenchmark-dev                      # bench/
   python3                               # independent checkers in ../shared/tools
   zlib1g-dev python3-meshio python3-pytest  # io: zlib-compressed VTU; tests: meshio interoperability
+  pybind11-dev python3-pybind11 python3-dev python3-numpy  # python/: the cmx module (pybind11); its tests (pytest, meshio)
 )
 for arg in "$@"; do
   case "$arg" in

@@ -1,0 +1,94 @@
+// cmx._cmx: is_ball, boundary_faces, is_expandable, expand_topologically (cmx/topology.hpp) and
+// read / write (cmx/io.hpp).
+#include <string>
+
+#include "cmx/io.hpp"
+#include "cmx/topology.hpp"
+#include "python/src/common.hpp"
+
+namespace cmx::python {
+
+void bind_topology_io(py::module_& m) {
+  m.def(
+      "is_ball",
+      [](const IndexArray& tets, std::size_t vertex_count) {
+        const std::vector<Tet> t = tets_of(tets, "T");
+        BallCheck b;
+        {
+          py::gil_scoped_release release;
+          b = is_ball(t, vertex_count);
+        }
+        return py::make_tuple(b.ok, b.message);
+      },
+      py::arg("T"), py::arg("vertex_count"));
+  m.def(
+      "boundary_faces",
+      [](const IndexArray& tets, std::size_t vertex_count) {
+        const std::vector<std::array<std::uint32_t, 3>> f = boundary_faces(tets_of(tets, "T"), vertex_count);
+        py::array_t<std::uint32_t> out({static_cast<py::ssize_t>(f.size()), py::ssize_t{3}});
+        std::uint32_t* p = out.mutable_data();
+        for (std::size_t i = 0; i < f.size(); ++i)
+          for (std::size_t k = 0; k < 3; ++k) p[3 * i + k] = f[i][k];
+        return out;
+      },
+      py::arg("T"), py::arg("vertex_count"));
+  m.def(
+      "is_expandable",
+      [](const IndexArray& tets, std::size_t vertex_count, const IndexArray& cluster, std::uint32_t vertex) {
+        return is_expandable(tets_of(tets, "T"), vertex_count, indices_of(cluster, "cluster_vertices"), vertex);
+      },
+      py::arg("T"), py::arg("vertex_count"), py::arg("cluster_vertices"), py::arg("vertex"));
+  m.def(
+      "expand_topologically",
+      [](const IndexArray& tets, std::size_t vertex_count, const IndexArray& cluster, const std::string& order) {
+        const std::vector<Tet> t = tets_of(tets, "T");
+        const std::vector<std::uint32_t> c = indices_of(cluster, "cluster_vertices");
+        TopologicalExpansion x;
+        {
+          py::gil_scoped_release release;
+          x = expand_topologically(t, vertex_count, c, order);
+        }
+        py::dict d;
+        d["complete"] = x.complete;
+        d["sequence"] = array_of(x.sequence);
+        d["remaining"] = array_of(x.remaining);
+        d["initially_simply_connected"] = x.initially_simply_connected;
+        return d;
+      },
+      py::arg("T"), py::arg("vertex_count"), py::arg("cluster_vertices"), py::arg("order"));
+
+  m.def(
+      "read",
+      [](const std::string& path) {
+        Mesh mesh;
+        {
+          py::gil_scoped_release release;
+          mesh = read(path);
+        }
+        py::dict d;
+        d["points"] = array_of(mesh.points);
+        d["points_exact"] = text_rows(mesh.points_exact);
+        d["tets"] = array_of(mesh.tets);
+        d["target_exact"] = text_rows(mesh.target_exact);
+        d["target"] = array_of(mesh.target);
+        return d;
+      },
+      py::arg("path"));
+  m.def(
+      "write",
+      [](const std::string& path, const DoubleArray& points, const std::vector<ExactPoint3>& points_exact,
+         const IndexArray& tets, const DoubleArray& target, const std::vector<ExactPoint3>& target_exact) {
+        Mesh mesh;
+        mesh.points = points_of(points, "points");
+        mesh.points_exact = points_exact;
+        mesh.tets = tets_of(tets, "tets");
+        mesh.target = points_of(target, "target");
+        mesh.target_exact = target_exact;
+        py::gil_scoped_release release;
+        write(path, mesh);
+      },
+      py::arg("path"), py::arg("points"), py::arg("points_exact"), py::arg("tets"), py::arg("target"),
+      py::arg("target_exact"));
+}
+
+}  // namespace cmx::python

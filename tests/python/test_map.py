@@ -1,0 +1,121 @@
+"""cmx.map on numpy arrays and on exact Fractions; the exact target checked in Python."""
+import json
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import cmx
+from conftest import exactly_positive, grid_ball
+
+
+def check_map(r, V, T):
+    """The result is a verified map whose exact target has every tet positive (checked here with
+    fractions, independently of cmx), whose first len(V) source vertices are the input's."""
+    assert r.ok and r.status == "success" and r.message == ""
+    assert r.exact_valid
+    n = len(V)
+    assert r.source.shape[1] == 3 and r.source.dtype == np.float64 and len(r.source) >= n
+    assert r.target_double.shape == r.source.shape and r.target_double.dtype == np.float64
+    assert r.tets.ndim == 2 and r.tets.shape[1] == 4 and r.tets.dtype == np.uint32
+    assert len(r.tets) >= len(T)
+    assert len(r.target_exact) == len(r.source)
+    assert all(isinstance(x, Fraction) for p in r.target_exact[:5] for x in p)
+    assert exactly_positive(r.target_exact, r.tets) == []
+    assert exactly_positive(r.source_exact, r.tets) == []
+    assert np.array_equal(r.source[:n], np.asarray(V, dtype=np.float64))
+    # the doubles are the exact target rounded (snap may move them; they stay close)
+    exact_as_double = np.array([[float(x) for x in p] for p in r.target_exact])
+    assert np.allclose(exact_as_double, r.target_double, atol=1e-6)
+    if r.double_valid:
+        assert exactly_positive(r.target_double.tolist(), r.tets) == []
+    assert r.report["status"] == "success"
+    assert r.report == json.loads(r.report_json)
+
+
+def test_map_onto_sphere_from_numpy_arrays(ball):
+    V, T = ball
+    r = cmx.map(V, T, shape="sphere")
+    check_map(r, V, T)
+    assert r.double_valid and r.double_inverted == 0 and r.double_flat == 0
+    # the boundary vertices are where cmx.boundary_for_shape puts them
+    ids, positions = cmx.boundary_for_shape(V, T, "sphere")
+    assert ids.tolist() == cmx.boundary_vertices(T).tolist()
+    assert [r.target_exact[i] for i in ids] == [tuple(Fraction(x) for x in p) for p in positions.tolist()]
+    assert "cmx.Result success" in repr(r) and bool(r)
+
+
+@pytest.mark.parametrize("init", ["auto", "shrink", "tutte"])
+def test_map_with_a_boundary_dict(ball, init):
+    V, T = ball
+    ids = cmx.boundary_vertices(T)
+    centre = V.mean(axis=0)
+    # the unit cube scaled by 2 about its centre, rotated: a convex target
+    c, s = np.cos(0.3), np.sin(0.3)
+    R = np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])
+    boundary = {int(i): tuple(R @ (2 * (V[i] - centre))) for i in ids}
+    r = cmx.map(V, T, boundary=boundary, init=init)
+    check_map(r, V, T)
+    for i, p in boundary.items():
+        assert r.target_exact[i] == tuple(Fraction(x) for x in p)
+
+
+def test_map_with_ids_and_positions_and_with_a_codomain(ball):
+    V, T = ball
+    ids = cmx.boundary_vertices(T)
+    W = V * np.array([1.0, 2.0, 0.5])  # an affine image: every boundary position given by it
+    r1 = cmx.map(V, T, boundary=(ids, W[ids]))
+    check_map(r1, V, T)
+    r2 = cmx.map(V, T, codomain=W)
+    check_map(r2, V, T)
+    assert r1.target_exact_text == r2.target_exact_text
+    assert r1.tets.tolist() == r2.tets.tolist()
+
+
+def test_exact_input_through_fractions():
+    V, T = grid_ball(2)
+    # exact vertices that no double holds: thirds, and an interior vertex off the grid
+    Vq = [[Fraction(int(round(x * 2)), 3) for x in p] for p in V]
+    centre = [Fraction(1, 3)] * 3
+    interior = [i for i, p in enumerate(Vq) if all(0 < x < Fraction(2, 3) for x in p)]
+    assert interior
+    Vq[interior[0]] = [Fraction(1, 3) + Fraction(1, 7**20), Fraction(1, 3), Fraction(1, 3) - Fraction(1, 11)]
+    assert exactly_positive(Vq, T) == []
+    ids = cmx.boundary_vertices(T)
+    boundary = {int(i): tuple(3 * (x - c) for x, c in zip(Vq[i], centre)) for i in ids}
+    r = cmx.map(Vq, T, boundary=boundary)
+    assert r.ok and r.exact_valid
+    assert exactly_positive(r.target_exact, r.tets) == []
+    assert r.source_exact[:len(Vq)] == [tuple(p) for p in Vq]
+    for i, p in boundary.items():
+        assert r.target_exact[i] == p
+    # the same as text and as an object array
+    r2 = cmx.map(np.array([[str(x) for x in p] for p in Vq], dtype=object), T, boundary=boundary)
+    assert r2.target_exact_text == r.target_exact_text
+    # homogeneous integers give the same points
+    for (x, y, z, w), p in zip(r.target_homogeneous, r.target_exact):
+        assert w > 0 and (Fraction(x, w), Fraction(y, w), Fraction(z, w)) == p
+
+
+def test_options_reach_the_run(ball):
+    V, T = ball
+    seen = []
+    r = cmx.map(V, T, shape="tet", init="shrink", snap="nearest", order="index", filter="exact",
+                subclusters=0, collapse=False, threads=1, time_limit=60, progress=seen.append)
+    check_map(r, V, T)
+    assert seen and all(isinstance(p, cmx.Progress) for p in seen)
+    assert {p.phase for p in seen} <= {"expansion", "collapse", "doubles", "verification", "shelling search"}
+    assert "expansion" in {p.phase for p in seen}
+
+
+def test_given_initial_target(ball):
+    V, T = ball
+    r0 = cmx.map(V, T, shape="sphere")
+    n = len(V)
+    # a valid map of the input vertices: start from it
+    start = r0.target_double[:n] if len(r0.source) == n and r0.double_valid else None
+    if start is None:
+        pytest.skip("the first map added vertices or has invalid doubles")
+    ids = cmx.boundary_vertices(T)
+    r = cmx.map(V, T, boundary=(ids, start[ids]), init=start)
+    check_map(r, V, T)
