@@ -91,6 +91,9 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
   out.smooth_every = in.smooth;
   out.threads = in.threads;
   out.collapse = in.collapse;
+  out.merge = in.merge;
+  out.flip_collapse = in.flip_collapse;
+  out.collapse_refinement = in.collapse_refinement;
   out.check = in.check;
   out.init = *init;
   return std::nullopt;
@@ -216,11 +219,40 @@ void fill_output(const algorithm::MapResult& in, MapResult& out) {
   out.double_flat = in.doubles.check.degenerate;
 }
 
-std::string report_of(const MapResult& r, const algorithm::MapResult* run) {
+std::string report_of(const MapResult& r) {
   api::JsonObject j;
   j.str("status", to_string(r.status)).str("reason", r.reason).str("message", r.message);
-  if (run) api::add_result_fields(j, *run);
+  api::add_result_fields(j, r.report_fields);
   return j.text();
+}
+
+MapStatistics statistics_of(const algorithm::MapResult& run) {
+  const algorithm::MapStatistics& s = run.stats;
+  MapStatistics m;
+  m.input_vertices = s.input_vertices;
+  m.input_tets = s.input_tets;
+  m.output_vertices = s.output_vertices;
+  m.output_tets = s.output_tets;
+  m.growth_ratio = s.growth_ratio;
+  m.rounded_coordinates = s.input_rounded;
+  m.preprocess_splits = s.split_topology + s.split_all_boundary_tet + s.split_no_shrink_point + s.split_fallback;
+  m.expansions_simple = s.expansions_simple;
+  m.expansions_subcluster = s.expansions_subcluster;
+  m.subclusters_expanded = s.subcluster_expansions;
+  m.expansions_star_shapified = s.expansions_star_shapified;
+  m.pushes = s.pushes;
+  m.expansions_inflated = s.expansions_inflated;
+  m.expansions_automatic = s.expansions_automatic;
+  m.max_bits = s.max_bits;
+  m.double_checked = run.doubles.checked;
+  m.double_repair_stopped = run.doubles.stopped_at_deadline;
+  m.seconds_total = s.seconds_total;
+  return m;
+}
+
+MapTraceRow trace_row(const algorithm::TraceRow& t) {
+  return MapTraceRow{t.step, t.kind ? t.kind : "", t.vertex, t.cone_rows, t.lp ? t.lp : "", t.bits, t.max_bits,
+                     t.mean_bits, t.added_vertices, t.degenerate_left, t.cluster_left, t.seconds, t.star};
 }
 
 MapStatus status_of(algorithm::MapErrorKind kind) {
@@ -241,8 +273,9 @@ MapResult run(const algorithm::MapProblem& problem, const MapOptions& options,
   if (options.progress)
     internal.progress = [&](const algorithm::MapProgress& p) {
       options.progress(
-          MapProgress{p.phase, p.done, p.total, p.expanded, p.remaining, p.splits, p.max_bits, p.seconds});
+          MapProgress{p.phase ? p.phase : "", p.done, p.total, p.expanded, p.remaining, p.splits, p.max_bits, p.seconds});
     };
+  if (options.trace) internal.trace = [&](const algorithm::TraceRow& t) { options.trace(trace_row(t)); };
   algorithm::MapResult run;
   try {
     run = algorithm::map_to_domain(problem, internal);
@@ -251,7 +284,7 @@ MapResult run(const algorithm::MapProblem& problem, const MapOptions& options,
     const MapStatus status = cancelled ? MapStatus::cancelled : status_of(e.kind());
     MapResult r =
         failed({status, e.what(), status == MapStatus::invalid_input ? algorithm::kind_name(e.kind()) : ""});
-    r.report_json = report_of(r, nullptr);
+    r.report_json = report_of(r);
     return r;
   }
   MapResult r;
@@ -260,7 +293,9 @@ MapResult run(const algorithm::MapProblem& problem, const MapOptions& options,
   r.reason = r.ok() ? "" : to_string(r.status);
   r.input_vertices = run.stats.input_vertices;
   if (r.ok()) fill_output(run, r);
-  r.report_json = report_of(r, &run);
+  r.report_fields = api::result_fields(run);
+  r.statistics = statistics_of(run);
+  r.report_json = report_of(r);
   return r;
 }
 

@@ -140,7 +140,7 @@ JsonObject loss_json(const algorithm::PrecisionLoss& l) {
 
 }  // namespace
 
-void add_result_fields(JsonObject& j, const algorithm::MapResult& r) {
+std::vector<ReportField> result_fields(const algorithm::MapResult& r) {
   const algorithm::MapStatistics& s = r.stats;
   JsonObject in, out, bits;
   in.num("vertices", n(s.input_vertices)).num("tets", n(s.input_tets));
@@ -149,14 +149,27 @@ void add_result_fields(JsonObject& j, const algorithm::MapResult& r) {
   in.num("rounded_coordinates", n(s.input_rounded));
   out.num("vertices", n(s.output_vertices)).num("tets", n(s.output_tets)).num("growth_ratio", s.growth_ratio);
   bits.num("max", n(s.max_bits)).num("mean", s.mean_bits);
+  std::vector<ReportField> f;
+  const auto add = [&f](const char* key, const JsonObject& value) { f.push_back({key, value.text()}); };
   rusage usage{};
   if (getrusage(RUSAGE_SELF, &usage) == 0)
-    j.num("peak_rss_kb", std::uint64_t(usage.ru_maxrss));  // Linux: KiB
-  j.obj("input", in).obj("local", local_json(s.local)).obj("preprocess", preprocess_json(r));
-  j.obj("expansion", expansion_json(s));
-  j.obj("double_output", double_output_json(r)).obj("output", out).obj("bits", bits);
-  j.obj("seconds", seconds_json(s)).obj("predicates", predicates_json(s)).obj("verdict", verdict_json(r));
-  if (r.loss) j.obj("precision_loss", loss_json(*r.loss));
+    f.push_back({"peak_rss_kb", std::to_string(std::uint64_t(usage.ru_maxrss))});  // Linux: KiB
+  add("input", in);
+  add("local", local_json(s.local));
+  add("preprocess", preprocess_json(r));
+  add("expansion", expansion_json(s));
+  add("double_output", double_output_json(r));
+  add("output", out);
+  add("bits", bits);
+  add("seconds", seconds_json(s));
+  add("predicates", predicates_json(s));
+  add("verdict", verdict_json(r));
+  if (r.loss) add("precision_loss", loss_json(*r.loss));
+  return f;
+}
+
+void add_result_fields(JsonObject& j, const std::vector<ReportField>& fields) {
+  for (const ReportField& f : fields) j.raw(f.key, f.json);
 }
 
 }  // namespace cmx::api

@@ -43,6 +43,23 @@ struct MapProgress {
   double seconds = 0;
 };
 
+// One row of the precision study (`cmx map --trace` writes these as CSV), after every expansion.
+struct MapTraceRow {
+  std::size_t step = 0;             // 1, 2, ... (expansions so far)
+  std::string_view kind;            // simple, star-shapified, refinement, inflation, automatic
+  std::uint32_t vertex = 0;         // the vertex expanded
+  std::size_t cone_rows = 0;        // half-spaces of its expansion cone's LP (0: no LP)
+  std::string_view lp;              // certified, exact-fallback, exact, float-centre, none
+  std::size_t bits = 0;             // bits of the new position (largest homogeneous coordinate)
+  std::size_t max_bits = 0;         // over every vertex's current target position
+  double mean_bits = 0;
+  std::size_t added_vertices = 0;   // vertices added so far (preprocessing included)
+  std::size_t degenerate_left = 0;  // tets with two or more cluster vertices
+  std::size_t cluster_left = 0;     // cluster vertices still to expand
+  double seconds = 0;
+  std::size_t star = 0;  // 0: the global method; k: the k-th star of a local repair
+};
+
 // Options; the defaults are those of `cmx map`. The text-valued fields take the values of the
 // `cmx map` option of the same name (`cmx map --help` lists them); a value that does not parse
 // makes map_to_domain return MapStatus::invalid_options naming the field.
@@ -53,6 +70,9 @@ struct MapOptions {
   double time_limit_seconds = 0;                // 0 or infinite: none; a run over it returns time_limit
   std::size_t threads = 0;      // stars mapped at once (0: the machine's cores); output does not depend on it
   bool collapse = true;         // collapse added vertices where the map stays valid (smaller output)
+  bool merge = true;            // ... also merging them into moving neighbours (cmx map --no-merge)
+  bool flip_collapse = true;    // ... also after flips of their stars (cmx map --no-flip-collapse)
+  bool collapse_refinement = true;  // collapse what each star-shapification added, at once
   bool check = false;           // assert every invariant after every step (slow; for debugging)
   std::string snap = "repair";  // doubles written: repair, chebyshev, nearest
   std::string order = "priority";    // expansion order: priority, index, random:SEED
@@ -68,6 +88,9 @@ struct MapOptions {
   // Polled between steps; once it returns true the run stops at the next step and returns
   // MapStatus::cancelled (a signal handler's flag, a GUI's cancel button).
   std::function<bool()> stop;
+  // Called after every expansion, on the calling thread (stars mapped in parallel report theirs
+  // in star order once mapped); the views are valid during the call only.
+  std::function<void(const MapTraceRow&)> trace;
 };
 
 // How a run ended. Bad input is a status, not an exception: exceptions are kept for programming
@@ -82,6 +105,31 @@ enum class MapStatus : std::uint8_t {
   precision_lost,   // a non-exact `arith` lost validity (message says where)
 };
 const char* to_string(MapStatus status);
+
+// The headline figures of a run (`cmx map` prints these); report_json has every statistic.
+struct MapStatistics {
+  std::size_t input_vertices = 0, input_tets = 0;
+  std::size_t output_vertices = 0, output_tets = 0;
+  double growth_ratio = 0;                // output tets / input tets
+  std::size_t rounded_coordinates = 0;    // input coordinates rounded (a non-exact `arith` only)
+  std::size_t preprocess_splits = 0;      // tets split before the shrink (paper Sec. 4.1)
+  std::size_t expansions_simple = 0;      // cluster vertices expanded by one LP (Sec. 4.2.1)
+  std::size_t expansions_subcluster = 0;  // ... expanded together in subclusters
+  std::size_t subclusters_expanded = 0;   // those subclusters
+  std::size_t expansions_star_shapified = 0, pushes = 0;  // after star-shapification (Sec. 4.2.2)
+  std::size_t expansions_inflated = 0;    // after an inflation (Sec. 4.2.3)
+  std::size_t expansions_automatic = 0;   // with a forced position (a single candidate)
+  std::size_t max_bits = 0;               // largest homogeneous coordinate of the exact target
+  bool double_checked = false;            // the doubles were checked (snap is not none)
+  bool double_repair_stopped = false;     // the double repair stopped at the time limit
+  double seconds_total = 0;
+};
+
+// One top-level field of the report: its key and its value as JSON text.
+struct ReportField {
+  std::string key;
+  std::string json;
+};
 
 struct MapResult {
   MapStatus status = MapStatus::invalid_input;
@@ -110,6 +158,10 @@ struct MapResult {
   // input, local, preprocess, expansion, double_output, output, bits, seconds, predicates,
   // verdict, precision_loss. Filled whenever the run got past input validation.
   std::string report_json;
+  // The same fields but status, reason and message, in the same order, for callers that build a
+  // report of their own around them (`cmx map --report` adds its inputs and options).
+  std::vector<ReportField> report_fields;
+  MapStatistics statistics;  // filled whenever report_fields are
   bool ok() const { return status == MapStatus::success; }
 };
 

@@ -241,3 +241,70 @@ TEST_CASE("map_to_domain: the stop callback cancels a run") {
   CHECK(r.tets.empty());
   CHECK(std::string(cmx::to_string(r.status)) == "cancelled");
 }
+
+TEST_CASE("map_to_domain: the trace rows, the statistics and the report fields describe the run") {
+  const Arrays a = grid();
+  const cmx::ShapeBoundary shape = cmx::boundary_for_shape(a.vertices, a.tets, "sphere");
+  cmx::MapOptions o = quick();
+  o.init = cmx::InitialMap::shrink;
+  std::vector<std::size_t> steps;
+  std::size_t rows_without_kind = 0;
+  o.trace = [&](const cmx::MapTraceRow& row) {
+    steps.push_back(row.step);
+    if (row.kind.empty() || row.lp.empty()) ++rows_without_kind;
+  };
+  const cmx::MapResult r = cmx::map_to_domain(a.vertices, a.tets, shape.ids, shape.positions, o);
+  REQUIRE_MESSAGE(r.ok(), r.message);
+  // One row per expansion, numbered 1, 2, ...; every interior vertex of the shrink is expanded.
+  const cmx::MapStatistics& s = r.statistics;
+  const std::size_t expansions = s.expansions_simple + s.expansions_subcluster + s.expansions_star_shapified +
+                                 s.expansions_inflated + s.expansions_automatic;
+  CHECK(expansions > 0);
+  REQUIRE(steps.size() >= expansions);
+  for (std::size_t i = 0; i < steps.size(); ++i) CHECK(steps[i] == i + 1);
+  CHECK(rows_without_kind == 0);
+  // The statistics agree with the arrays returned.
+  CHECK(s.input_vertices == a.vertices.size());
+  CHECK(s.input_tets == a.tets.size());
+  CHECK(s.output_vertices == r.target.size());
+  CHECK(s.output_tets == r.tets.size());
+  CHECK(s.growth_ratio == doctest::Approx(double(r.tets.size()) / double(a.tets.size())));
+  CHECK(s.double_checked);
+  CHECK(s.max_bits > 0);
+  // report_json is status, reason, message, then report_fields in order.
+  REQUIRE_FALSE(r.report_fields.empty());
+  std::size_t at = r.report_json.find("\"message\"");
+  for (const cmx::ReportField& f : r.report_fields) {
+    const std::size_t next = r.report_json.find("\"" + f.key + "\": " + f.json, at);
+    CHECK_MESSAGE(next != std::string::npos, f.key);
+    at = next;
+  }
+}
+
+// The count of one expansion statistic in a report ("merged", "flip_collapses", ...).
+std::size_t report_count(const cmx::MapResult& r, const std::string& key) {
+  const std::size_t at = r.report_json.find("\"" + key + "\": ");
+  REQUIRE(at != std::string::npos);
+  return std::stoul(r.report_json.substr(at + key.size() + 4));
+}
+
+TEST_CASE("map_to_domain: merge and flip_collapse switch those collapses off") {
+  const Arrays a = grid();
+  const cmx::ShapeBoundary shape = cmx::boundary_for_shape(a.vertices, a.tets, "tet");  // merges here
+  cmx::MapOptions o = quick();
+  o.init = cmx::InitialMap::shrink;
+  const cmx::MapResult all = cmx::map_to_domain(a.vertices, a.tets, shape.ids, shape.positions, o);
+  REQUIRE_MESSAGE(all.ok(), all.message);
+  REQUIRE(report_count(all, "merged") > 0);
+  REQUIRE(report_count(all, "flip_collapses") > 0);
+  o.flip_collapse = false;
+  const cmx::MapResult no_flips = cmx::map_to_domain(a.vertices, a.tets, shape.ids, shape.positions, o);
+  REQUIRE_MESSAGE(no_flips.ok(), no_flips.message);
+  CHECK(no_flips.exact_valid);
+  CHECK(report_count(no_flips, "flip_collapses") == 0);
+  o.merge = false;
+  const cmx::MapResult no_merges = cmx::map_to_domain(a.vertices, a.tets, shape.ids, shape.positions, o);
+  REQUIRE_MESSAGE(no_merges.ok(), no_merges.message);
+  CHECK(no_merges.exact_valid);
+  CHECK(report_count(no_merges, "merged") == 0);
+}
