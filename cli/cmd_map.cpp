@@ -1,14 +1,20 @@
 // cmx map: the product. A ball-topology tet mesh and prescribed star-shaped boundary positions in,
-// a refined mesh whose image has no inverted or degenerate tet out, verified exactly.
+// a refined mesh whose image has no inverted or degenerate tet out, verified exactly. The files
+// are read and written here; the map itself is the public call cmx::map_to_domain (cmx/map.hpp),
+// on the problem as exact text, its options the canonical names of what the command line parsed.
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "algorithm/map.hpp"
+#include "arith/rational.hpp"
+#include "cmx/map.hpp"
 #include "cli/command.hpp"
 #include "cli/common_options.hpp"
 #include "cli/files.hpp"
@@ -79,45 +85,60 @@ void check_outputs(const MapArgs& a) {
   check_writable(outputs);
 }
 
-std::vector<io::Point3> exact(const std::vector<HPoint>& points) {
+// The exact points of the public result's text, read back (canonical "p/q": exact round trip).
+std::vector<io::Point3> exact(const std::vector<ExactPoint3>& points) {
   std::vector<io::Point3> out;
   out.reserve(points.size());
-  for (const HPoint& p : points) out.push_back({p.coordinate(0), p.coordinate(1), p.coordinate(2)});
+  for (const ExactPoint3& p : points) {
+    io::Point3 q;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto value = parse_rational(p[k]);
+      if (!value) throw std::logic_error("cmx map: the library returned '" + p[k] + "', not a rational");
+      q[k] = *value;
+    }
+    out.push_back(std::move(q));
+  }
   return out;
 }
 
+// The map as the writers take it: exact source and target, tets.
+struct ExactMap {
+  io::TetMap map;
+  std::size_t input_vertices = 0;
+};
+
 // One output file of the map; `doubles` are the target positions chosen by --snap, `fields` what
 // display formats carry besides (io/map_fields.hpp: source positions, added, volumes, angles).
-void write_map_file(const std::string& format, const std::string& path, const algorithm::MapResult& r,
+void write_map_file(const std::string& format, const std::string& path, const ExactMap& m,
                     const std::vector<std::array<double, 3>>& doubles, const io::DisplayFields& fields) {
   if (format == "tmap") {
-    io::write_tmap(path, io::TetMap{exact(r.source), exact(r.target), r.tets});
+    io::write_tmap(path, m.map);
   } else if (format == "ovm") {
-    const std::vector<io::Point3> ex = exact(r.target);
-    io::write_ovm(path, doubles, r.tets, &ex);
+    io::write_ovm(path, doubles, m.map.tets, &m.map.target);
   } else {
-    io::write_display_mesh(path, doubles, r.tets, io::carries_display_fields(path) ? fields : io::DisplayFields{});
+    io::write_display_mesh(path, doubles, m.map.tets, io::carries_display_fields(path) ? fields : io::DisplayFields{});
   }
 }
 
-void write_outputs(const MapArgs& a, const algorithm::MapResult& r) {
+void write_outputs(const MapArgs& a, const cmx::MapResult& r) {
   if (a.out.empty()) return;
   const OutputPlan plan = output_plan(a);
+  const ExactMap m{io::TetMap{exact(r.source_exact), exact(r.target_exact), r.tets}, r.input_vertices};
   const bool display = std::any_of(plan.formats.begin(), plan.formats.end(),
                                    [](const std::string& f) { return f != "tmap" && f != "ovm"; });
   const io::DisplayFields fields =
-      display ? io::map_display_fields(io::nearest_doubles(exact(r.source)), r.doubles.target, r.tets, r.stats.input_vertices)
+      display ? io::map_display_fields(io::nearest_doubles(m.map.source), r.target, m.map.tets, m.input_vertices)
               : io::DisplayFields{};
-  for (const std::string& f : plan.formats) write_map_file(f, plan.path(f), r, r.doubles.target, fields);
+  for (const std::string& f : plan.formats) write_map_file(f, plan.path(f), m, r.target, fields);
 }
 
 constexpr const char* trace_header =
     "step,kind,vertex,cone_rows,lp,bits,max_bits,mean_bits,added_vertices,degenerate_left,cluster_left,seconds,star\n";
 
-std::string trace_line(const algorithm::TraceRow& r) {
+std::string trace_line(const MapTraceRow& r) {
   char buf[256];
-  std::snprintf(buf, sizeof buf, "%zu,%s,%u,%zu,%s,%zu,%zu,%.2f,%zu,%zu,%zu,%.4f,%zu\n", r.step, r.kind, r.vertex,
-                r.cone_rows, r.lp, r.bits, r.max_bits, r.mean_bits, r.added_vertices, r.degenerate_left, r.cluster_left,
+  std::snprintf(buf, sizeof buf, "%zu,%.*s,%u,%zu,%.*s,%zu,%zu,%.2f,%zu,%zu,%zu,%.4f,%zu\n", r.step, int(r.kind.size()),
+                r.kind.data(), r.vertex, r.cone_rows, int(r.lp.size()), r.lp.data(), r.bits, r.max_bits, r.mean_bits, r.added_vertices, r.degenerate_left, r.cluster_left,
                 r.seconds, r.star);
   return buf;
 }
@@ -142,14 +163,23 @@ void write_trace(const MapArgs& a, const std::string& rows, bool failed) {
     io::write_file_atomically(a.trace, [&](std::ostream& os) { os << trace_header << rows; });
 }
 
-int exit_code_of(algorithm::MapOutcome outcome) {
-  switch (outcome) {
-    case algorithm::MapOutcome::success: return exit_ok;
-    case algorithm::MapOutcome::time_limit: return exit_time_limit;
-    case algorithm::MapOutcome::precision_lost: return exit_precision_lost;
-    case algorithm::MapOutcome::stuck: break;
+int exit_code_of(MapStatus status) {
+  switch (status) {
+    case MapStatus::success: return exit_ok;
+    case MapStatus::time_limit: return exit_time_limit;
+    case MapStatus::precision_lost: return exit_precision_lost;
+    default: break;
   }
   return exit_stuck;
+}
+
+// The failure of a run that ended without a result (MapResult::reason: a MapErrorKind's name).
+std::optional<algorithm::MapErrorKind> error_kind(const std::string& reason) {
+  using K = algorithm::MapErrorKind;
+  for (const K k : {K::invalid_input, K::not_ball, K::boundary_mismatch, K::source_not_positive, K::degenerate_boundary,
+                    K::boundary_orientation, K::not_star_shaped, K::time_limit, K::stuck, K::internal})
+    if (reason == algorithm::kind_name(k)) return k;
+  return std::nullopt;
 }
 
 int exit_code_of(algorithm::MapErrorKind kind) {
@@ -164,23 +194,27 @@ int exit_code_of(algorithm::MapErrorKind kind) {
 }
 
 // The message of a map error, led by the file at fault.
-std::string culprit_message(const MapArgs& a, const algorithm::MapError& e) {
+std::string culprit_message(const MapArgs& a, algorithm::MapErrorKind kind, const std::string& what) {
   using K = algorithm::MapErrorKind;
   const std::string positions = !a.boundary.empty() ? a.boundary : a.codomain;
-  switch (e.kind()) {
-    case K::not_ball: return a.domain + " is not a ball: " + e.what();
-    case K::source_not_positive: return a.domain + ": " + e.what();
-    case K::boundary_mismatch: return positions.empty() ? e.what() : positions + ": " + e.what();
-    default: return e.what();
+  switch (kind) {
+    case K::not_ball: return a.domain + " is not a ball: " + what;
+    case K::source_not_positive: return a.domain + ": " + what;
+    case K::boundary_mismatch: return positions.empty() ? what : positions + ": " + what;
+    default: return what;
   }
 }
 
-// Reports a run that ends without a map; `r` is null when no result exists. The report carries
-// `detail` (the message without the status that it states apart).
-int fail(const MapArgs& a, int code, const std::string& status, const std::string& text, const algorithm::MapResult* r,
-         const std::string& detail) {
+std::string culprit_message(const MapArgs& a, const algorithm::MapError& e) {
+  return culprit_message(a, e.kind(), e.what());
+}
+
+// Reports a run that ends without a map; `fields` are empty when no result exists. The report
+// carries `detail` (the message without the status that it states apart).
+int fail(const MapArgs& a, int code, const std::string& status, const std::string& text,
+         const std::vector<ReportField>& fields, const std::string& detail) {
   message(text);
-  write_report(a, report_json(a, r, status, detail), true);
+  write_report(a, report_json(a, fields, status, detail), true);
   return code;
 }
 
@@ -195,67 +229,128 @@ int load_problem(const MapArgs& a, algorithm::MapProblem& problem) {
     const bool mismatch = e.kind() == io::ErrorKind::mismatch;  // two inputs that do not fit together
     const int code = mismatch ? exit_invalid_problem : mesh_error_code(e, a.domain);
     const char* status = mismatch ? "boundary_mismatch" : code == exit_invalid_problem ? "source_not_positive" : "bad_input";
-    return fail(a, code, status, e.what(), nullptr, e.what());
+    return fail(a, code, status, e.what(), {}, e.what());
   } catch (const algorithm::MapError& e) {
     const std::string text = culprit_message(a, e);
-    return fail(a, exit_code_of(e.kind()), algorithm::kind_name(e.kind()), text, nullptr, text);
+    return fail(a, exit_code_of(e.kind()), algorithm::kind_name(e.kind()), text, {}, text);
   } catch (const Failure& e) {  // an input that cannot be opened
-    return fail(a, e.code(), "bad_input", e.what(), nullptr, e.what());
+    return fail(a, e.code(), "bad_input", e.what(), {}, e.what());
   }
 }
 
-void print_verdict(const MapArgs& a, const algorithm::MapResult& r) {
-  const auto& s = r.stats;
-  const algorithm::DoubleMap& dm = r.doubles;
+void print_verdict(const MapArgs& a, const cmx::MapResult& r) {
+  const MapStatistics& s = r.statistics;
   const std::string arith = to_string(a.options.placement.arith);
   std::printf("map: success, verified exactly (every tet positive in source and target, boundary as prescribed)%s\n",
               a.options.placement.arith.exact() ? "" : (", coordinates in " + arith).c_str());
-  if (s.input_rounded)
+  if (s.rounded_coordinates)
     std::printf("  input read in %s: %zu coordinates rounded; the map is verified for the rounded input\n", arith.c_str(),
-                s.input_rounded);
+                s.rounded_coordinates);
   std::printf("  %zu vertices / %zu tets in, %zu / %zu out (growth %.4f), %zu splits in preprocessing\n", s.input_vertices,
-              s.input_tets, s.output_vertices, s.output_tets, s.growth_ratio,
-              s.split_topology + s.split_all_boundary_tet + s.split_no_shrink_point + s.split_fallback);
+              s.input_tets, s.output_vertices, s.output_tets, s.growth_ratio, s.preprocess_splits);
   std::printf("  expansions: %zu simple, %zu in %zu subclusters, %zu star-shapified (%zu pushes), %zu inflated, "
               "%zu automatic\n",
-              s.expansions_simple, s.expansions_subcluster, s.subcluster_expansions, s.expansions_star_shapified, s.pushes,
+              s.expansions_simple, s.expansions_subcluster, s.subclusters_expanded, s.expansions_star_shapified, s.pushes,
               s.expansions_inflated, s.expansions_automatic);
-  if (dm.checked)
+  if (s.double_checked)
     std::printf("  largest coordinate: %zu bits; doubles (--snap %s) %s (%zu inverted, %zu degenerate)\n", s.max_bits,
-                std::string(algorithm::to_string(snap_used(a))).c_str(), dm.check.valid() ? "valid" : "NOT valid",
-                dm.check.inverted, dm.check.degenerate);
+                std::string(algorithm::to_string(snap_used(a))).c_str(), r.double_valid ? "valid" : "NOT valid",
+                r.double_inverted, r.double_flat);
   else
     std::printf("  largest coordinate: %zu bits; doubles not checked (--snap none)\n", s.max_bits);
-  if (dm.stopped_at_deadline)
+  if (s.double_repair_stopped)
     std::printf("  the double repair stopped at the time limit; the exact map is complete and verified\n");
   std::printf("  %.3f s\n", s.seconds_total);
 }
 
-int map_and_write(MapArgs& a, const algorithm::MapProblem& problem) {
+// The problem as the public call takes it: exact text (canonical, so read back exactly).
+struct ExactProblem {
+  std::vector<ExactPoint3> source, boundary_positions;
+  std::vector<Tet> tets;
+};
+
+std::vector<ExactPoint3> exact_text(const std::vector<algorithm::Point3>& points) {
+  std::vector<ExactPoint3> out;
+  out.reserve(points.size());
+  for (const algorithm::Point3& p : points) out.push_back({to_string(p[0]), to_string(p[1]), to_string(p[2])});
+  return out;
+}
+
+ExactProblem exact_problem(const algorithm::MapProblem& p) {
+  return ExactProblem{exact_text(p.source), exact_text(p.boundary_positions), {p.tets.begin(), p.tets.end()}};
+}
+
+InitialMap public_init(algorithm::InitialMapKind k) {
+  switch (k) {
+    case algorithm::InitialMapKind::shrink: return InitialMap::shrink;
+    case algorithm::InitialMapKind::tutte: return InitialMap::tutte;
+    case algorithm::InitialMapKind::given: return InitialMap::given;
+    case algorithm::InitialMapKind::automatic: break;
+  }
+  return InitialMap::automatic;
+}
+
+// The parsed command line as public options: every value by its canonical name, which
+// map_to_domain parses back to the same choice.
+cmx::MapOptions public_options(const MapArgs& a, const algorithm::MapProblem& problem) {
+  const algorithm::MapOptions& in = a.options;
+  cmx::MapOptions o;
+  o.init = public_init(in.init);
+  if (in.init == algorithm::InitialMapKind::given) o.initial_target = exact_text(problem.initial_target);
+  o.time_limit_seconds = in.time_limit_seconds;
+  o.threads = in.threads;
+  o.collapse = in.collapse;
+  o.merge = in.merge;
+  o.flip_collapse = in.flip_collapse;
+  o.collapse_refinement = in.collapse_refinement;
+  o.check = in.check;
+  o.snap = std::string(algorithm::to_string(in.snap));
+  o.order = topology::to_string(in.order);
+  o.filter = to_string(in.filter);
+  o.lp = in.placement.lp.backend;
+  o.norm = std::string(lp::to_string(in.placement.lp.norm));
+  o.precision = std::string(algorithm::to_string(in.placement.precision));
+  o.arith = to_string(in.placement.arith);
+  o.subclusters = in.subclusters;
+  o.smooth = in.smooth_every;
+  return o;
+}
+
+// A run that ended without a result: the status is the failure's name, exit code as before.
+int fail_without_result(const MapArgs& a, const cmx::MapResult& r) {
+  const auto kind = error_kind(r.reason);
+  const std::string text = kind ? culprit_message(a, *kind, r.message) : r.message;
+  const int code = kind ? exit_code_of(*kind) : r.status == MapStatus::invalid_options ? exit_usage : exit_internal;
+  return fail(a, code, r.reason, text, {}, text);
+}
+
+int map_and_write(const MapArgs& a, const algorithm::MapProblem& problem) {
+  cmx::MapOptions options = public_options(a, problem);
   const bool show_progress = !quiet() && isatty(2);
   if (show_progress)
-    a.options.progress = [](const algorithm::MapProgress& p) {
+    options.progress = [](const MapProgress& p) {
       std::fputs(progress_line(p).c_str(), stderr);
       std::fflush(stderr);
     };
   std::string trace_rows;
-  if (!a.trace.empty()) a.options.trace = [&](const algorithm::TraceRow& row) { trace_rows += trace_line(row); };
-  algorithm::MapResult r;
+  if (!a.trace.empty()) options.trace = [&](const MapTraceRow& row) { trace_rows += trace_line(row); };
+  const ExactProblem in = exact_problem(problem);
+  cmx::MapResult r;
   try {
-    r = algorithm::map_to_domain(problem, a.options);
-  } catch (const algorithm::MapError& e) {
+    r = cmx::map_to_domain(in.source, in.tets, problem.boundary_vertices, in.boundary_positions, options);
+  } catch (const std::logic_error& e) {  // cmx's own bug
     if (show_progress) std::fputc('\n', stderr);
-    const std::string text = culprit_message(a, e);
-    return fail(a, exit_code_of(e.kind()), algorithm::kind_name(e.kind()), text, nullptr, text);
+    return fail(a, exit_internal, algorithm::kind_name(algorithm::MapErrorKind::internal), e.what(), {}, e.what());
   }
   if (show_progress) std::fputc('\n', stderr);
-  const bool failed = r.outcome != algorithm::MapOutcome::success;
+  if (r.report_fields.empty()) return fail_without_result(a, r);
+  const bool failed = !r.ok();
   write_trace(a, trace_rows, failed);
   if (failed)
-    return fail(a, exit_code_of(r.outcome), algorithm::to_string(r.outcome),
-                std::string(algorithm::to_string(r.outcome)) + ": " + r.message, &r, r.message);
+    return fail(a, exit_code_of(r.status), to_string(r.status), std::string(to_string(r.status)) + ": " + r.message,
+                r.report_fields, r.message);
   write_outputs(a, r);
-  write_report(a, report_json(a, &r, "success", ""), false);
+  write_report(a, report_json(a, r.report_fields, "success", ""), false);
   if (!quiet()) print_verdict(a, r);
   return exit_ok;
 }

@@ -37,13 +37,13 @@ algorithm::SnapPolicy snap_used(const MapArgs& a) {
   return a.options.placement.arith.exact() ? a.options.snap : algorithm::SnapPolicy::nearest;
 }
 
-JsonObject report_json(const MapArgs& a, const algorithm::MapResult* r, const std::string& status, const std::string& message) {
+JsonObject report_json(const MapArgs& a, const std::vector<ReportField>& fields, const std::string& status,
+                       const std::string& message) {
   JsonObject j;
   j.str("cmx_version", cmx_version);
   j.str("domain", a.domain).str("status", status).str("message", message);
   j.obj("options", options_json(a));
-  if (!r) return j;
-  api::add_result_fields(j, *r);
+  api::add_result_fields(j, fields);
   return j;
 }
 

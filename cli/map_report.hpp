@@ -1,8 +1,10 @@
 #pragma once
 // The JSON report of `cmx map --report`: the options, and after a run its statistics and verdicts.
 #include <string>
+#include <vector>
 
 #include "algorithm/map.hpp"
+#include "cmx/map.hpp"
 #include "cli/json.hpp"
 #include "cli/map_args.hpp"
 
@@ -11,7 +13,9 @@ namespace cmx::cli {
 // The snap policy the run applies: a non-exact --arith's doubles are the plain rounding.
 algorithm::SnapPolicy snap_used(const MapArgs& a);
 
-// `r` is null when the run stopped before a result existed (bad input, invalid problem).
-JsonObject report_json(const MapArgs& a, const algorithm::MapResult* r, const std::string& status, const std::string& message);
+// The report: cmx's version, DOMAIN, status, message, options, then `fields` (a run's statistics
+// and verdicts, cmx::MapResult::report_fields; empty when the run stopped before a result existed).
+JsonObject report_json(const MapArgs& a, const std::vector<ReportField>& fields, const std::string& status,
+                       const std::string& message);
 
 }  // namespace cmx::cli

@@ -4,14 +4,15 @@
 
 #include "cli/progress_line.hpp"
 
-using cmx::algorithm::MapProgress;
+using cmx::MapProgress;
 using cmx::cli::progress_line;
 
 TEST_CASE("the progress line names the expansion phase and its counts") {
   MapProgress p;
+  p.phase = "expansion";
   p.expanded = 120;
   p.remaining = 30;
-  p.splits = 4;
+  p.added_vertices = 4;
   p.max_bits = 80;
   p.seconds = 3.14;
   CHECK(progress_line(p) == "\r  expansion: expanded 120, left 30, added 4, max bits 80, 3.1 s\x1b[K");
