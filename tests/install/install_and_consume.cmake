@@ -29,7 +29,7 @@ endforeach()
 # The installed headers are the public API (include/cmx/*.hpp from the sources, and the generated
 # version.hpp) and the header-only kernel's closure under include/cmx_standalone/; nothing of a
 # namespace detail under include/cmx, and nothing of the GPL GLPK backend in the headers and
-# libraries (bin/cmx, the program, may name its --lp glpk option).
+# libraries (bin/cmx, the program, is installed only when built without GLPK).
 file(GLOB source_headers RELATIVE ${CMX_SOURCE_DIR}/include ${CMX_SOURCE_DIR}/include/cmx/*.hpp)
 file(GLOB_RECURSE standalone_headers RELATIVE ${CMX_BUILD_DIR}/standalone ${CMX_BUILD_DIR}/standalone/*)
 set(expected_headers ${source_headers} cmx/version.hpp ${standalone_headers})
@@ -52,6 +52,13 @@ foreach(f IN LISTS installed_files)
     message(FATAL_ERROR "${f} is or names the GLPK backend (GPL): not part of the package")
   endif()
 endforeach()
+# The program is installed only when it does not link GLPK (cli/CMakeLists.txt).
+if(EXISTS ${prefix}/bin/cmx)
+  file(STRINGS ${prefix}/bin/cmx needs_glpk REGEX "libglpk[.]so")
+  if(needs_glpk)
+    message(FATAL_ERROR "${prefix}/bin/cmx is installed and links GLPK (GPL)")
+  endif()
+endif()
 
 # What the exported flags cannot undo is refused when compiling (arith/ieee_semantics.hpp).
 file(WRITE ${WORK_DIR}/fast_math.cpp "#include <cmx_standalone/kernel/orient_standalone.hpp>\n")
