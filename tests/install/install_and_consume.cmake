@@ -8,12 +8,7 @@
 cmake_minimum_required(VERSION 3.25)  # script mode: the policies of the project (IN_LIST)
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "failed (${rc}): ${ARGN}\n${out}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run_command.cmake)
 run(${CMAKE_COMMAND} --install ${CMX_BUILD_DIR} --prefix ${prefix})
 
 # The installed package finds GMP and MPFR again on the consumer's machine: no library path of
