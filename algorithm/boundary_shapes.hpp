@@ -2,7 +2,7 @@
 // Boundary-condition generators: prescribed positions for the boundary vertices of a ball-topology
 // tet mesh on a tetrahedron, a "stiff" tetrahedron, the unit sphere or a random star shape, all
 // star-shaped with respect to the origin (the construction of the Shrink-and-Expand program's
-// generators, shrink-and-expand-notes.md section 10, reimplemented; departures are listed below).
+// generators, reimplemented; departures are listed below).
 //
 // Construction (generate_boundary), for each attempt until one validates (at most 100):
 //  1. Four corners: distinct boundary vertices drawn with a seeded std::mt19937_64 and a

@@ -1,5 +1,5 @@
 #pragma once
-// Double-precision output (paper Sec. 4.2.7; ARCHITECTURE.md section 7, snap rounding).
+// Double-precision output (paper Sec. 4.2.7; snap rounding).
 //
 // The exact map is always the result; these steps look for IEEE doubles that are a valid map too
 // (every tet strictly positive with the target positions replaced by the doubles, decided with

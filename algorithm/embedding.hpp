@@ -1,5 +1,5 @@
 #pragma once
-// The map under construction (ARCHITECTURE.md sections 1 and 6): a tet mesh with, per vertex, an
+// The map under construction (paper Alg. 1): a tet mesh with, per vertex, an
 // exact source position, an exact target position and whether it is still in the cluster
 // (unexpanded, sitting at the shrink point p_c). Every edit goes through here so that each split
 // is mirrored in the source mesh (invariant 5) and every new vertex gets both positions.

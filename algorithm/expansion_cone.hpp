@@ -1,5 +1,5 @@
 #pragma once
-// The expansion cone of a cluster vertex v (paper Sec. 3.1, ARCHITECTURE.md section 6) as the
+// The expansion cone of a cluster vertex v (paper Sec. 3.1) as the
 // strict linear constraints on v's new position x:
 //   * base tets   (v the only cluster vertex): x strictly on the inner side of the face opposite v;
 //   * side tets   (v and one other cluster vertex u, which stays at p_c): the same, with u at p_c —

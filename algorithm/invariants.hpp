@@ -1,5 +1,5 @@
 #pragma once
-// The method's invariants (ARCHITECTURE.md section 6), checked from scratch: what `--check` asserts
+// The method's invariants (paper Sec. 3 and 4), checked from scratch: what `--check` asserts
 // after every step, and what the shrink asserts once.
 //   1. every cluster vertex sits at p_c;
 //   2. a tet with two or more cluster vertices is degenerate (automatic by 1); every other tet is

@@ -1,5 +1,5 @@
 #pragma once
-// The typed error of the mapping method (ARCHITECTURE.md section 8): what went wrong, where, in
+// The typed error of the mapping method: what went wrong, where, in
 // words a user can act on. The library never exits; the CLI maps each kind to an exit code.
 #include <cstdint>
 #include <stdexcept>

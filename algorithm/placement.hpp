@@ -1,7 +1,7 @@
 #pragma once
 // Choosing a new position inside an expansion cone: the Chebyshev centre of the cone's kernel
-// (lp/chebyshev_center.hpp), then the precision-reduction policy (ARCHITECTURE.md section 7,
-// paper Sec. 4.2.3) for a point with fewer bits that is still certified strictly inside.
+// (lp/chebyshev_center.hpp), then the precision-reduction policy (paper
+// Sec. 4.2.3) for a point with fewer bits that is still certified strictly inside.
 #include <cstdint>
 #include <optional>
 #include <string>

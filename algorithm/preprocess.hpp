@@ -1,6 +1,6 @@
 #pragma once
 // Preprocessing with parsimony, and the shrink point (issue: "split only what the invariant
-// requires"; ARCHITECTURE.md section 6, invariants 1-2).
+// requires"; the invariants of algorithm/invariants.hpp).
 //
 // The shrunk state needs every tet with no cluster vertex to be positive with the prescribed
 // positions, and every tet with exactly one cluster vertex u to be positive with u at p_c, i.e.

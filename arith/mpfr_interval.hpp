@@ -2,7 +2,7 @@
 // An interval [lo, hi] of MPFR floating-point numbers with a precision chosen at run time: lower
 // bounds are rounded with MPFR_RNDD, upper bounds with MPFR_RNDU, so no hardware rounding mode is
 // involved. Used as an optional middle tier for precision studies (policy "mpfr:BITS"); measured
-// slower than the exact homogeneous determinant below ~512-bit data (kernel-notes A, fact 3).
+// slower than the exact homogeneous determinant below ~512-bit data.
 //
 // Enclosure property: if x in a and y in b then x op y in a op b (exact reals). Operation results
 // get the larger precision of the two operands. Bounds are never NaN for finite inputs.

@@ -1,6 +1,5 @@
 #pragma once
-// The coordinate arithmetic of a run (`cmx map --arith`, ARCHITECTURE.md section 3 "double
-// kernel"): the number system in which every coordinate the method holds must lie.
+// The coordinate arithmetic of a run (`cmx map --arith`): the number system in which every coordinate the method holds must lie.
 //
 //   rational  (default) exact rationals: nothing is rounded.
 //   double    IEEE 754 binary64: every new coordinate is rounded to the nearest double.

@@ -1,5 +1,5 @@
 #pragma once
-// Filter policies of the predicate cascade (ARCHITECTURE.md sections 3 and 7), chosen by name,
+// Filter policies of the predicate cascade (kernel/orient.hpp), chosen by name,
 // and the counters of which tier decided.
 //
 //   cascade   (default) double inputs: semi-static filter, then adaptive expansions (always

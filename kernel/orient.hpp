@@ -1,6 +1,5 @@
 #pragma once
-// The public orientation predicates: exact signs through the filter cascade of ARCHITECTURE.md
-// section 3, with the arithmetic chosen by a FilterPolicy (kernel/filter_policy.hpp).
+// The public orientation predicates: exact signs through a filter cascade, with the arithmetic chosen by a FilterPolicy (kernel/filter_policy.hpp).
 //
 // Sign convention: orient3d(a, b, c, d) is the sign of det[b-a, c-a, d-a]; it is positive for the
 // unit tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1). This is the OPPOSITE of Shewchuk's and

@@ -3,7 +3,7 @@
 // simplex_engine.hpp) on rows scaled to unit Euclidean norm of their coefficient part. For the
 // Chebyshev LP that is the recommended normalisation (unit normal, equal r coefficients up to a
 // common factor): without it, float bases of 40-bit data fail the exact certificate half of the
-// time (kernel-notes C.5). Its answer is only a guess: certify_basis decides.
+// time (measured). Its answer is only a guess: certify_basis decides.
 #include <cstddef>
 #include <vector>
 

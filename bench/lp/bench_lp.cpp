@@ -5,7 +5,7 @@
 // polytope around a known interior point c, as an expansion cone's kernel: normals n with
 // `bits`-bit integer entries, d = n.c + h with h in [|n|_1, 2|n|_1). shift:1 puts c at random
 // 8-bit integer coordinates (the origin is then usually outside: phase 1 needed); shift:0 puts c
-// at the origin, the distribution of kernel-notes C.1/C.4 (b > 0, the slack basis is feasible).
+// at the origin, a distribution (b > 0, the slack basis is feasible).
 // Every backend solves the same LP: l2-upper weights with 24 significant bits (so that GLPK gets
 // integer-scaled rows below 2^53 at 40 bits). The timed call is the whole chebyshev_center
 // (weights, LP set-up, solve, exact answer); CGAL's time covers building its program from the

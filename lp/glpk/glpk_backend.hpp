@@ -2,7 +2,7 @@
 // Backend `glpk`: GLPK's exact simplex (glp_exact) as an independent reference (GPL; tests,
 // fuzzers and benchmarks only; the core never links it). Define CMX_HAVE_GLPK where linked.
 //
-// glp_exact is exact inside but not at its interface (kernel-notes C.1): non-integer doubles are
+// glp_exact is exact inside but not at its interface: non-integer doubles are
 // replaced by nearby simple fractions and results come back as doubles. So the problem is fed
 // as integers: each column is scaled by a power of two that clears the 2-adic part of its
 // denominators (x_j = 2^e x'_j; this absorbs dyadic weights such as l2-upper), each row by the

@@ -13,7 +13,7 @@
 #include "orient_quads.hpp"
 
 #ifdef CMX_HAVE_TETGEN
-// libtet exports Shewchuk's predicates with C++ linkage and non-const pointers (kernel-notes B).
+// libtet exports Shewchuk's predicates with C++ linkage and non-const pointers.
 double orient3d(double* pa, double* pb, double* pc, double* pd);
 double orient2d(double* pa, double* pb, double* pc);
 void exactinit(int verbose, int noexact, int nofilter, double maxx, double maxy, double maxz);
@@ -52,7 +52,7 @@ inline double naive_det(const Quad& q) { return orient3d_det(q.a.data(), q.b.dat
 // TetGen's sign in OUR convention: Shewchuk's orient3d(a, b, c, d) = -det[b-a, c-a, d-a].
 inline int tetgen_sign(Quad q) {
   static const bool initialised = [] {
-    exactinit(0, 0, 1, 1.0, 1.0, 1.0);  // nofilter = 1: the pure adaptive path (kernel-notes B)
+    exactinit(0, 0, 1, 1.0, 1.0, 1.0);  // nofilter = 1: the pure adaptive path
     return true;
   }();
   (void)initialised;

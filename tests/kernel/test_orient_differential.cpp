@@ -107,7 +107,7 @@ TEST_CASE("differential: cascade == exact (== TetGen) on >= 10^6 double quadrupl
   Tally plane{"d rounded onto plane abc"};
   for (int i = 0; i < 300000 / scale_down; ++i) check(on_plane(rng, i % 2 ? 1.0 : 1000.0), plane, true);
   report(plane);
-  CHECK(plane.naive_wrong > 0);  // measured about 10 % (kernel-notes 11)
+  CHECK(plane.naive_wrong > 0);  // measured: about 10 %
 
   Tally ulps{"coplanar points moved by 1-3 ulps"};
   for (int i = 0; i < 150000 / scale_down; ++i) {

@@ -253,7 +253,7 @@ TEST_CASE("Corollary 1: expanding Eq.(1) vertices keeps the cluster mesh simply 
       // Each expansion strictly reduces the number of degenerate simplices: the zero-length
       // edges (cluster edges) strictly, the degenerate tets weakly. The tets alone need not
       // drop: when v has a single expanded neighbour x, every tet at v keeps >= 2 unexpanded
-      // vertices (ARCHITECTURE.md invariant 3 is about simplices, not only tets).
+      // vertices (the invariant of topology/cluster_links.hpp is about simplices, not only tets).
       CHECK(c.edges < cluster_edges);
       cluster_edges = c.edges;
       const std::size_t now = count_degenerate_tets(g.mesh, U);

@@ -54,7 +54,7 @@ TetMesh read_domain(const fs::path& path) {
   return TetMesh(data.positions.size(), data.tets);
 }
 
-// Shrink-and-Expand's preprocessing step 2 (docs: shrink-and-expand-notes.md): split every
+// Shrink-and-Expand's preprocessing step 2: split every
 // interior edge whose two endpoints are boundary vertices. Returns the number of splits.
 std::size_t split_interior_edges_between_boundary_vertices(TetMesh& m) {
   const std::vector<char> on_boundary = boundary_vertex_flags(m);
