@@ -23,8 +23,10 @@
 #include "io/boundary.hpp"
 #include "io/orientation.hpp"
 #include "topology/ball_check.hpp"
+#include "topology/union_find.hpp"
 
 namespace cmx::cli {
+using topology::UnionFind;
 namespace {
 
 using io::TetMeshData;
@@ -44,16 +46,6 @@ const HelpText help = {
     "its source geometry; the tets are read as stored, so the verdicts check the map.\n",
     "Exit status: 0 when the file was read (whatever the verdicts); 2 bad command line; 3 unreadable\n"
     "or malformed file (a directory, a missing file: the reason is given).\n"};
-
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
-};
 
 using Edge = std::array<std::uint32_t, 2>;
 using Face = std::array<std::uint32_t, 3>;

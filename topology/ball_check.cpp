@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "topology/complex_queries.hpp"
+#include "topology/union_find.hpp"
 
 namespace cmx::topology {
 namespace {
@@ -24,22 +25,6 @@ BallVerdict fail(BallVerdict v, BallFailure f, std::vector<VertexId> simplex, co
   v.message = what;
   return v;
 }
-
-struct UnionFind {
-  std::vector<std::uint32_t> p;
-  explicit UnionFind(std::size_t n) : p(n) { std::iota(p.begin(), p.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (p[x] != x) x = p[x] = p[p[x]];
-    return x;
-  }
-  bool unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a == b) return false;
-    p[a] = b;
-    return true;
-  }
-};
 
 }  // namespace
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "topology/union_find.hpp"
+
 namespace cmx::topology {
 namespace {
 
@@ -18,20 +20,6 @@ Triangle make_tri(VertexId a, VertexId b, VertexId c) {
   std::sort(t.begin(), t.end());
   return t;
 }
-
-// Small union-find over dense indices; used for b0 computations.
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
-};
 
 void add_closure_of(SimplexSet& s, const std::vector<VertexId>& verts) {
   // All faces of the simplex spanned by verts (size 1..4), all already sorted ascending.
