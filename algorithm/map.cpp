@@ -34,6 +34,11 @@ const char* to_string(MapOutcome o) {
   return "?";
 }
 
+// A non-exact run's coordinates are its output: the doubles are their plain rounding, checked.
+SnapPolicy applied_snap_policy(const MapOptions& options) {
+  return options.placement.arith.exact() ? options.snap : SnapPolicy::nearest;
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -119,15 +124,10 @@ ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_poin
   return settings;
 }
 
-// A non-exact run's coordinates are its output: the doubles are their plain rounding, checked.
-SnapPolicy snap_policy(const MapOptions& options) {
-  return options.placement.arith.exact() ? options.snap : SnapPolicy::nearest;
-}
-
 void make_doubles(Embedding& e, const MapOptions& options, RunControl& control, MapResult& r) {
   MapStatistics& s = r.stats;
   control.report("doubles", 0);
-  r.doubles = make_double_map(e, snap_policy(options), options.placement, &control);
+  r.doubles = make_double_map(e, applied_snap_policy(options), options.placement, &control);
   s.chebyshev_moves = r.doubles.chebyshev_moves;
   s.snap_exact_rounds = r.doubles.exact_rounds;
   s.snap_crowd_scalings = r.doubles.crowd_scalings;

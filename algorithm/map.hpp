@@ -1,5 +1,5 @@
 #pragma once
-// The mapping method end to end (paper Alg. 1; ARCHITECTURE.md section 1):
+// The mapping method end to end (paper Alg. 1):
 //   validate -> preprocess (parsimonious splits, shrink point p_c) -> shrink -> expand the cluster
 //   mesh vertex by vertex -> verify exactly, on an independent code path.
 // The CLI (`cmx map`) is a thin shell over map_to_domain.
@@ -181,6 +181,10 @@ struct MapStatistics {
 // precision_lost: a non-exact --arith (placement.arith) lost validity; MapResult::loss says where.
 enum class MapOutcome { success, time_limit, stuck, precision_lost };
 const char* to_string(MapOutcome o);
+
+// The snap policy a run applies: MapOptions::snap, except that a non-exact `arith`'s doubles are
+// the plain rounding of its coordinates (SnapPolicy::nearest).
+SnapPolicy applied_snap_policy(const MapOptions& options);
 
 struct MapResult {
   MapOutcome outcome = MapOutcome::stuck;

@@ -34,7 +34,7 @@ JsonObject options_json(const MapArgs& a) {
 }  // namespace
 
 algorithm::SnapPolicy snap_used(const MapArgs& a) {
-  return a.options.placement.arith.exact() ? a.options.snap : algorithm::SnapPolicy::nearest;
+  return algorithm::applied_snap_policy(a.options);
 }
 
 JsonObject report_json(const MapArgs& a, const std::vector<ReportField>& fields, const std::string& status,
