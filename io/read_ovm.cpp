@@ -78,18 +78,18 @@ void read_property_block(Scanner& s, std::string_view entity, std::size_t header
   if (keep && is_string) mesh.vertex_string_properties.push_back(std::move(property));
 }
 
-}  // namespace
+using Edge = std::array<std::uint32_t, 2>;
+using FaceCycle = std::array<std::uint32_t, 3>;  // a face's vertex cycle (from-vertex of each half-edge)
 
-TetMeshData read_ovm(std::string_view bytes, const std::string& name, const ReadOptions& options) {
-  Scanner s(bytes, name);
-  TetMeshData mesh;
-  {
-    const auto magic = s.token("'OVM ASCII'");
-    if (magic != "OVM") s.fail(ErrorKind::syntax, "not an OVM file: expected 'OVM ASCII', found " + quoted(magic));
-    const auto mode = s.token("'ASCII'");
-    if (mode == "BINARY") s.fail(ErrorKind::unsupported, "OVM BINARY files are not supported; write OVM ASCII");
-    if (mode != "ASCII") s.fail(ErrorKind::syntax, "expected 'OVM ASCII', found 'OVM " + std::string(quoted(mode)) + "'");
-  }
+void read_header(Scanner& s) {
+  const auto magic = s.token("'OVM ASCII'");
+  if (magic != "OVM") s.fail(ErrorKind::syntax, "not an OVM file: expected 'OVM ASCII', found " + quoted(magic));
+  const auto mode = s.token("'ASCII'");
+  if (mode == "BINARY") s.fail(ErrorKind::unsupported, "OVM BINARY files are not supported; write OVM ASCII");
+  if (mode != "ASCII") s.fail(ErrorKind::syntax, "expected 'OVM ASCII', found 'OVM " + std::string(quoted(mode)) + "'");
+}
+
+void read_vertices(Scanner& s, TetMeshData& mesh) {
   expect_keyword(s, "Vertices");
   const auto nv = s.count("vertex count", max_vertices, 6);
   mesh.positions.reserve(std::size_t(nv));
@@ -100,9 +100,12 @@ TetMeshData read_ovm(std::string_view bytes, const std::string& name, const Read
     p[2] = s.rational("z coordinate");
     mesh.positions.push_back(std::move(p));
   }
+}
+
+std::vector<Edge> read_edges(Scanner& s, std::uint64_t nv) {
   expect_keyword(s, "Edges");
   const auto ne = s.count("edge count", max_vertices, 4);
-  std::vector<std::array<std::uint32_t, 2>> edges;
+  std::vector<Edge> edges;
   edges.reserve(std::size_t(ne));
   for (std::uint64_t i = 0; i < ne; ++i) {
     const auto a = index_below(s, nv, "edge vertex");
@@ -110,17 +113,20 @@ TetMeshData read_ovm(std::string_view bytes, const std::string& name, const Read
     if (a == b) s.fail(ErrorKind::syntax, "edge " + std::to_string(i) + " is a loop at vertex " + std::to_string(a));
     edges.push_back({a, b});
   }
+  return edges;
+}
+
+std::vector<FaceCycle> read_faces(Scanner& s, const std::vector<Edge>& edges) {
   expect_keyword(s, "Faces");
   const auto nf = s.count("face count", max_tets * 4, 8);
-  // A face's vertex cycle, taken from its half-edges (from-vertex of each).
-  std::vector<std::array<std::uint32_t, 3>> faces;
+  std::vector<FaceCycle> faces;
   faces.reserve(std::size_t(nf));
   for (std::uint64_t i = 0; i < nf; ++i) {
     const auto k = s.unsigned_integer("face size");
     if (k != 3) s.fail(ErrorKind::non_tet_cell, "face " + std::to_string(i) + " has " + std::to_string(k) + " half-edges; only triangles are supported");
-    std::array<std::uint32_t, 3> from{}, to{};
+    FaceCycle from{}, to{};
     for (int j = 0; j < 3; ++j) {
-      const auto h = index_below(s, 2 * ne, "half-edge index");
+      const auto h = index_below(s, 2 * edges.size(), "half-edge index");
       const auto& e = edges[h / 2];
       from[std::size_t(j)] = e[h % 2];
       to[std::size_t(j)] = e[1 - h % 2];
@@ -132,6 +138,37 @@ TetMeshData read_ovm(std::string_view bytes, const std::string& name, const Read
       s.fail(ErrorKind::syntax, "face " + std::to_string(i) + " repeats a vertex");
     faces.push_back(from);
   }
+  return faces;
+}
+
+// The tet bounded by four half-face cycles (polyhedron i, on `line`). They must bound one
+// tetrahedron consistently: every directed edge of one half-face appears reversed in another
+// one, and exactly four vertices are used.
+Tet tet_of_half_faces(Scanner& s, const std::array<FaceCycle, 4>& cycles, std::uint64_t i, std::size_t line) {
+  Tet t{cycles[0][0], cycles[0][1], cycles[0][2], 0};
+  bool found = false;
+  for (const auto& c : cycles)
+    for (auto v : c)
+      if (v != t[0] && v != t[1] && v != t[2]) {
+        if (found && v != t[3]) s.fail_at(line, ErrorKind::non_tet_cell, "polyhedron " + std::to_string(i) + " has more than four vertices");
+        t[3] = v;
+        found = true;
+      }
+  if (!found) s.fail_at(line, ErrorKind::degenerate_tet, "polyhedron " + std::to_string(i) + " has fewer than four vertices");
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> directed;
+  for (const auto& c : cycles)
+    for (std::size_t j = 0; j < 3; ++j) directed.emplace_back(c[j], c[(j + 1) % 3]);
+  std::sort(directed.begin(), directed.end());
+  bool closed = std::adjacent_find(directed.begin(), directed.end()) == directed.end();
+  for (const auto& [a, b] : directed)
+    closed = closed && std::binary_search(directed.begin(), directed.end(), std::make_pair(b, a));
+  if (!closed)
+    s.fail_at(line, ErrorKind::syntax, "polyhedron " + std::to_string(i) + ": its half-faces do not bound a consistently oriented tetrahedron");
+  return t;
+}
+
+// The tets, and the line of each (for messages of the later validation).
+std::vector<std::size_t> read_polyhedra(Scanner& s, const std::vector<FaceCycle>& faces, TetMeshData& mesh) {
   expect_keyword(s, "Polyhedra");
   const auto nc = s.count("polyhedron count", max_tets, 8);
   mesh.tets.reserve(std::size_t(nc));
@@ -141,38 +178,21 @@ TetMeshData read_ovm(std::string_view bytes, const std::string& name, const Read
     const auto k = s.unsigned_integer("polyhedron size");
     const std::size_t line = s.line();
     if (k != 4) s.fail(ErrorKind::non_tet_cell, "polyhedron " + std::to_string(i) + " has " + std::to_string(k) + " half-faces; only tetrahedra are supported");
-    std::array<std::array<std::uint32_t, 3>, 4> cycles{};
+    std::array<FaceCycle, 4> cycles{};
     for (std::size_t j = 0; j < 4; ++j) {
-      const auto hf = index_below(s, 2 * nf, "half-face index");
+      const auto hf = index_below(s, 2 * faces.size(), "half-face index");
       auto c = faces[hf / 2];
       if (hf % 2) std::swap(c[1], c[2]);  // the opposite half-face runs the cycle backwards
       cycles[j] = c;
     }
-    // The four half-faces must bound one tetrahedron consistently: every directed edge of one
-    // half-face appears reversed in another one, and exactly four vertices are used.
-    Tet t{cycles[0][0], cycles[0][1], cycles[0][2], 0};
-    bool found = false;
-    for (const auto& c : cycles)
-      for (auto v : c)
-        if (v != t[0] && v != t[1] && v != t[2]) {
-          if (found && v != t[3]) s.fail_at(line, ErrorKind::non_tet_cell, "polyhedron " + std::to_string(i) + " has more than four vertices");
-          t[3] = v;
-          found = true;
-        }
-    if (!found) s.fail_at(line, ErrorKind::degenerate_tet, "polyhedron " + std::to_string(i) + " has fewer than four vertices");
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> directed;
-    for (const auto& c : cycles)
-      for (std::size_t j = 0; j < 3; ++j) directed.emplace_back(c[j], c[(j + 1) % 3]);
-    std::sort(directed.begin(), directed.end());
-    bool closed = std::adjacent_find(directed.begin(), directed.end()) == directed.end();
-    for (const auto& [a, b] : directed)
-      closed = closed && std::binary_search(directed.begin(), directed.end(), std::make_pair(b, a));
-    if (!closed)
-      s.fail_at(line, ErrorKind::syntax, "polyhedron " + std::to_string(i) + ": its half-faces do not bound a consistently oriented tetrahedron");
-    mesh.tets.push_back(t);
+    mesh.tets.push_back(tet_of_half_faces(s, cycles, i, line));
     tet_lines.push_back(line);
   }
-  // Property blocks until the end.
+  return tet_lines;
+}
+
+// Property blocks until the end; vertex string properties are kept.
+void read_properties(Scanner& s, std::uint64_t nv, std::uint64_t ne, std::uint64_t nf, std::uint64_t nc, TetMeshData& mesh) {
   while (s.skip_space()) {
     const std::size_t header_line = s.line();
     const auto kind = s.token("property block");
@@ -187,14 +207,31 @@ TetMeshData read_ovm(std::string_view bytes, const std::string& name, const Read
     else s.fail(ErrorKind::syntax, "expected a property block (VProp, EProp, ...) or the end of the file, found " + quoted(kind));
     read_property_block(s, kind, header_line, count, kind == "VProp", mesh);
   }
-  if (options.use_exact_position_property) {
-    for (const auto& prop : mesh.vertex_string_properties) {
-      if (prop.name != "str_exact_position") continue;
-      for (std::size_t v = 0; v < prop.values.size(); ++v)
-        if (!parse_exact_position(prop.values[v], mesh.positions[v]))
-          throw IoError(ErrorKind::syntax, name, 0, "str_exact_position of vertex " + std::to_string(v) + " is not 'x;y;z' of exact numbers: " + quoted(prop.values[v]));
-    }
+}
+
+// The exact positions cmx writes beside the doubles (`str_exact_position`), replacing them.
+void apply_exact_positions(TetMeshData& mesh, const std::string& name) {
+  for (const auto& prop : mesh.vertex_string_properties) {
+    if (prop.name != "str_exact_position") continue;
+    for (std::size_t v = 0; v < prop.values.size(); ++v)
+      if (!parse_exact_position(prop.values[v], mesh.positions[v]))
+        throw IoError(ErrorKind::syntax, name, 0, "str_exact_position of vertex " + std::to_string(v) + " is not 'x;y;z' of exact numbers: " + quoted(prop.values[v]));
   }
+}
+
+}  // namespace
+
+TetMeshData read_ovm(std::string_view bytes, const std::string& name, const ReadOptions& options) {
+  Scanner s(bytes, name);
+  TetMeshData mesh;
+  read_header(s);
+  read_vertices(s, mesh);
+  const std::uint64_t nv = mesh.positions.size();
+  const std::vector<Edge> edges = read_edges(s, nv);
+  const std::vector<FaceCycle> faces = read_faces(s, edges);
+  const std::vector<std::size_t> tet_lines = read_polyhedra(s, faces, mesh);
+  read_properties(s, nv, edges.size(), faces.size(), mesh.tets.size(), mesh);
+  if (options.use_exact_position_property) apply_exact_positions(mesh, name);
   validate_and_orient(mesh, options, name, tet_lines);
   return mesh;
 }
