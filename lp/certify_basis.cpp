@@ -67,30 +67,105 @@ double approx_ratio(const Integer& X, const Integer& D) {
   return std::ldexp(mx / md, int(e));
 }
 
+// The square system of a basis, rows in basis order: tight constraints, then x_j = 0 (row-major
+// M, right-hand side h). False when a zero variable is out of range.
+bool basis_system(const Problem& p, const Basis& basis, std::vector<Integer>& M, std::vector<Integer>& h) {
+  const std::size_t n = p.num_vars;
+  M.assign(n * n, Integer());
+  h.assign(n, Integer());
+  std::size_t r = 0;
+  for (std::size_t id : basis.tight) {
+    IntegerRow row = integer_row(p, id);
+    for (std::size_t j = 0; j < n; ++j) M[r * n + j].swap(row.v[j]);
+    h[r].swap(row.v[n]);
+    ++r;
+  }
+  for (std::size_t j : basis.zero_vars) {
+    if (j >= n) return false;
+    M[r * n + j] = 1;
+    ++r;
+  }
+  return true;
+}
+
+// Dual feasibility: the multipliers y of M^T y = c are >= 0 on tight rows and 0 on the x_j = 0
+// rows. DT > 0 (normalised by the solver), so the signs of Y are those of y. Returns optimal
+// when they are (the primal side still to check), dual_infeasible, or singular.
+Certificate::Verdict dual_verdict(const Problem& p, std::vector<Integer> MT, const Basis& basis) {
+  std::vector<Integer> Y;
+  const Integer DT = solve_integer_system(std::move(MT), integer_objective(p), p.num_vars, Y);
+  if (sgn(DT) == 0) return Certificate::Verdict::singular;  // cannot happen: det(M^T) = det(M) != 0
+  for (std::size_t k = 0; k < p.num_vars; ++k) {
+    const int s = sgn(Y[k]);
+    if (k < basis.tight.size() ? s < 0 : s != 0) return Certificate::Verdict::dual_infeasible;
+  }
+  return Certificate::Verdict::optimal;
+}
+
+// The point X / D in doubles for the filter; empty when some coordinate is outside the range
+// where its error bound holds.
+std::vector<double> filter_point(const std::vector<Integer>& X, const Integer& D) {
+  std::vector<double> px(X.size());
+  for (std::size_t j = 0; j < X.size(); ++j) {
+    px[j] = approx_ratio(X[j], D);
+    if (std::isnan(px[j])) return {};
+  }
+  return px;
+}
+
+// The sign of constraint k's slack at px when the double filter decides it (+1, -1), else 0.
+// Error bound of the double slack h' - g'.x~ relative to S = |h'| + sum |g'_j x~_j|: inputs
+// carry relative error <= 2^-52 (conversion) + 2^-53 (normalisation), x~ < 2^-50, products
+// 2^-53, and the sum of n + 1 terms (n + 1) 2^-53. All magnitudes are kept in [2^-300, 2^300]
+// (and the normalisation divides by a norm in the same range), so nothing underflows.
+int filtered_slack_sign(const FloatForm& filter, std::size_t k, const std::vector<double>& px) {
+  const std::size_t n = px.size();
+  const double rel = (8.0 + double(n)) * 0x1p-48;
+  const double* g = &filter.g[k * n];
+  double s = filter.h[k], S = std::fabs(s);
+  for (std::size_t j = 0; j < n; ++j) {
+    const double t = g[j] * px[j];
+    s -= t;
+    S += std::fabs(t);
+  }
+  const double E = rel * S * (1 + 0x1p-40);
+  return s > E ? 1 : s < -E ? -1 : 0;
+}
+
+// Primal feasibility of every constraint outside the basis at X / D: the filter first where it
+// applies, the exact slack h D - g.X otherwise.
+bool primal_feasible(const Problem& p, const Basis& basis, const std::vector<Integer>& X, const Integer& D,
+                     const FloatForm* filter) {
+  const std::size_t n = p.num_vars;
+  std::vector<std::size_t> tight_sorted = basis.tight;
+  std::sort(tight_sorted.begin(), tight_sorted.end());
+  const std::vector<double> px = filter ? filter_point(X, D) : std::vector<double>{};
+  const std::vector<std::size_t> ids = filter ? filter->ids : constraint_ids(p);
+  Integer acc;
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const std::size_t id = ids[k];
+    if (std::binary_search(tight_sorted.begin(), tight_sorted.end(), id)) continue;
+    if (!px.empty() && filter->filterable[k]) {
+      const int sign = filtered_slack_sign(*filter, k, px);
+      if (sign > 0) continue;
+      if (sign < 0) return false;
+    }
+    const IntegerRow row = integer_row(p, id);
+    mpz_mul(acc.get_mpz_t(), row.rhs().get_mpz_t(), D.get_mpz_t());
+    for (std::size_t j = 0; j < n; ++j) mpz_submul(acc.get_mpz_t(), row.v[j].get_mpz_t(), X[j].get_mpz_t());
+    if (sgn(acc) < 0) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 Certificate certify_basis(const Problem& p, const Basis& basis, const FloatForm* filter) {
   Certificate cert;
   const std::size_t n = p.num_vars;
   if (basis.tight.size() + basis.zero_vars.size() != n) return cert;
-  // The square system, rows in basis order: tight constraints, then x_j = 0.
-  std::vector<Integer> M(n * n), h(n);
-  std::vector<std::size_t> tight_sorted = basis.tight;
-  std::sort(tight_sorted.begin(), tight_sorted.end());
-  {
-    std::size_t r = 0;
-    for (std::size_t id : basis.tight) {
-      IntegerRow row = integer_row(p, id);
-      for (std::size_t j = 0; j < n; ++j) M[r * n + j].swap(row.v[j]);
-      h[r].swap(row.v[n]);
-      ++r;
-    }
-    for (std::size_t j : basis.zero_vars) {
-      if (j >= n) return cert;
-      M[r * n + j] = 1;
-      ++r;
-    }
-  }
+  std::vector<Integer> M, h;
+  if (!basis_system(p, basis, M, h)) return cert;
   std::vector<Integer> MT(n * n);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j) MT[j * n + i] = M[i * n + j];
@@ -102,60 +177,14 @@ Certificate certify_basis(const Problem& p, const Basis& basis, const FloatForm*
     cert.x[j] = Rational(X[j], D);
     cert.x[j].canonicalize();
   }
-  // (3) dual feasibility first: it is cheaper than the primal scan and fails more often.
-  std::vector<Integer> Y;
-  // DT > 0 (normalised by the solver), so the signs of Y are those of y.
-  const Integer DT = solve_integer_system(std::move(MT), integer_objective(p), n, Y);
-  if (sgn(DT) == 0) return cert;  // cannot happen: det(M^T) = det(M) != 0
-  for (std::size_t k = 0; k < n; ++k) {
-    const int s = sgn(Y[k]);
-    if (k < basis.tight.size() ? s < 0 : s != 0) {
-      cert.verdict = Certificate::Verdict::dual_infeasible;
-      return cert;
-    }
+  // Dual feasibility first: it is cheaper than the primal scan and fails more often.
+  if (const auto dual = dual_verdict(p, std::move(MT), basis); dual != Certificate::Verdict::optimal) {
+    cert.verdict = dual;
+    return cert;
   }
-  // (2) primal feasibility of every constraint outside the basis.
-  std::vector<double> px;
-  bool px_ok = filter != nullptr;
-  if (px_ok) {
-    px.resize(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      px[j] = approx_ratio(X[j], D);
-      if (std::isnan(px[j])) px_ok = false;
-    }
-  }
-  const std::vector<std::size_t> ids = filter ? filter->ids : constraint_ids(p);
-  // Error bound of the double slack h' - g'.x~ relative to S = |h'| + sum |g'_j x~_j|: inputs
-  // carry relative error <= 2^-52 (conversion) + 2^-53 (normalisation), x~ < 2^-50, products
-  // 2^-53, and the sum of n + 1 terms (n + 1) 2^-53. All magnitudes are kept in [2^-300, 2^300]
-  // (and the normalisation divides by a norm in the same range), so nothing underflows.
-  const double rel = (8.0 + double(n)) * 0x1p-48;
-  Integer acc;
-  for (std::size_t k = 0; k < ids.size(); ++k) {
-    const std::size_t id = ids[k];
-    if (std::binary_search(tight_sorted.begin(), tight_sorted.end(), id)) continue;
-    if (px_ok && filter->filterable[k]) {
-      const double* g = &filter->g[k * n];
-      double s = filter->h[k], S = std::fabs(s);
-      for (std::size_t j = 0; j < n; ++j) {
-        const double t = g[j] * px[j];
-        s -= t;
-        S += std::fabs(t);
-      }
-      const double E = rel * S * (1 + 0x1p-40);
-      if (s > E) continue;
-      if (s < -E) {
-        cert.verdict = Certificate::Verdict::primal_infeasible;
-        return cert;
-      }
-    }
-    const IntegerRow row = integer_row(p, id);
-    mpz_mul(acc.get_mpz_t(), row.rhs().get_mpz_t(), D.get_mpz_t());
-    for (std::size_t j = 0; j < n; ++j) mpz_submul(acc.get_mpz_t(), row.v[j].get_mpz_t(), X[j].get_mpz_t());
-    if (sgn(acc) < 0) {
-      cert.verdict = Certificate::Verdict::primal_infeasible;
-      return cert;
-    }
+  if (!primal_feasible(p, basis, X, D, filter)) {
+    cert.verdict = Certificate::Verdict::primal_infeasible;
+    return cert;
   }
   cert.verdict = Certificate::Verdict::optimal;
   cert.value = objective_value(p, cert.x);
