@@ -55,112 +55,139 @@ std::uint64_t bounded(std::mt19937_64& rng, std::uint64_t bound) {
   return x % bound;
 }
 
-}  // namespace
+// The cluster vertices to expand: the given flags (vertices of no tet dropped), or every
+// interior vertex when none are given.
+std::vector<char> initial_cluster(const TetMesh& m, std::span<const char> initially_unexpanded) {
+  if (initially_unexpanded.empty()) return interior_vertex_flags(m);
+  std::vector<char> unexp(m.num_vertices(), 0);
+  for (std::size_t v = 0; v < unexp.size() && v < initially_unexpanded.size(); ++v)
+    unexp[v] = (initially_unexpanded[v] != 0 && !m.tets_of(static_cast<VertexId>(v)).empty()) ? 1 : 0;
+  return unexp;
+}
 
-TopologicalExpansionResult topological_expansion(const TetMesh& m, const ExpansionOrder& order,
-                                                 std::span<const char> initially_unexpanded) {
-  TopologicalExpansionResult r;
-  const std::size_t n = m.num_vertices();
-  std::vector<char> unexp;
-  if (initially_unexpanded.empty()) unexp = interior_vertex_flags(m);
-  else {
-    unexp.assign(n, 0);
-    for (std::size_t v = 0; v < n && v < initially_unexpanded.size(); ++v)
-      unexp[v] = (initially_unexpanded[v] != 0 && !m.tets_of(static_cast<VertexId>(v)).empty()) ? 1 : 0;
+// The rank of each vertex in a seeded random permutation (Fisher-Yates on mt19937_64).
+std::vector<std::uint64_t> random_ranks(std::size_t n, std::uint64_t seed) {
+  std::vector<std::uint64_t> rank(n);
+  std::vector<VertexId> perm(n);
+  std::iota(perm.begin(), perm.end(), 0u);
+  std::mt19937_64 rng(seed);
+  for (std::size_t i = n; i > 1; --i) std::swap(perm[i - 1], perm[bounded(rng, i)]);
+  for (std::size_t i = 0; i < n; ++i) rank[perm[i]] = i;
+  return rank;
+}
+
+// Greedy topological expansion: a queue of expandable cluster vertices keyed by the order,
+// re-evaluated lazily (versions) when a neighbour expands; isolated ones expand at once.
+class GreedyExpansion {
+ public:
+  GreedyExpansion(const TetMesh& m, const ExpansionOrder& order, std::span<const char> initially_unexpanded)
+      : m_(m), order_(order), unexp_(initial_cluster(m, initially_unexpanded)), version_(m.num_vertices(), 0) {
+    cluster_ = static_cast<std::size_t>(std::count(unexp_.begin(), unexp_.end(), 1));
+    r_.initial_cluster_vertices = cluster_;
+    if (order.kind == ExpansionOrderKind::random) rank_ = random_ranks(m.num_vertices(), order.seed);
   }
-  std::size_t cluster = static_cast<std::size_t>(std::count(unexp.begin(), unexp.end(), 1));
-  r.initial_cluster_vertices = cluster;
 
-  std::vector<std::uint64_t> rank;
-  if (order.kind == ExpansionOrderKind::random) {
-    rank.resize(n);
-    std::vector<VertexId> perm(n);
-    std::iota(perm.begin(), perm.end(), 0u);
-    std::mt19937_64 rng(order.seed);
-    for (std::size_t i = n; i > 1; --i) std::swap(perm[i - 1], perm[bounded(rng, i)]);
-    for (std::size_t i = 0; i < n; ++i) rank[perm[i]] = i;
+  TopologicalExpansionResult run() {
+    for (VertexId v = 0; v < m_.num_vertices(); ++v)
+      if (unexp_[v]) evaluate(v);
+    drain_automatic();
+    while (cluster_ > 0) {
+      const bool found = expand_next();
+      drain_automatic();
+      if (!found && cluster_ > 0) {
+        r_.stuck = true;
+        break;
+      }
+    }
+    if (r_.stuck) report_remaining();
+    return std::move(r_);
   }
 
-  std::vector<std::uint32_t> version(n, 0);
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-  std::vector<VertexId> automatic;  // isolated cluster vertices waiting to be expanded
-  ClusterLinkWorkspace ws;
-
-  auto key_of = [&](VertexId v, const ClusterVertexStatus& st) -> std::uint64_t {
-    switch (order.kind) {
+ private:
+  std::uint64_t key_of(VertexId v, const ClusterVertexStatus& st) const {
+    switch (order_.kind) {
       case ExpansionOrderKind::index: return v;
-      case ExpansionOrderKind::random: return rank[v];
+      case ExpansionOrderKind::random: return rank_[v];
       case ExpansionOrderKind::priority: break;
     }
     const std::uint64_t cls = st.manifold_k == 0 ? 3 : static_cast<std::uint64_t>(st.manifold_k - 1);
     const std::uint64_t fewer = 0xffffu - std::min<std::uint32_t>(st.expanded_neighbors, 0xffffu);
     return (cls << 48) | (fewer << 32) | v;
-  };
-  auto evaluate = [&](VertexId v) {
-    ++version[v];
-    if (!unexp[v]) return;
-    const ClusterVertexStatus st = classify_cluster_vertex(m, v, unexp, ws);
-    if (st.unexpanded_link.vertices == 0) {
-      automatic.push_back(v);
-    } else if (st.expandable) {
-      queue.push({key_of(v, st), v, version[v], static_cast<std::uint8_t>(st.manifold_k)});
-    }
-  };
-  std::vector<std::uint8_t> k_at(n, 0);
-  std::vector<VertexId> nbrs;
-  auto expand = [&](VertexId v, std::uint8_t k) {
-    unexp[v] = 0;
-    --cluster;
-    ++version[v];
-    r.sequence.push_back(v);
-    r.sequence_k.push_back(k);
-    nbrs.clear();
-    for (TetId t : m.tets_of(v))
-      for (VertexId w : m.tet(t))
-        if (w != v && unexp[w]) nbrs.push_back(w);
-    std::sort(nbrs.begin(), nbrs.end());
-    nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
-    for (VertexId w : nbrs) evaluate(w);  // evaluate() does not touch nbrs
-  };
-  auto drain_automatic = [&] {
-    while (!automatic.empty()) {
-      const VertexId v = automatic.back();
-      automatic.pop_back();
-      if (!unexp[v]) continue;
-      ++r.automatic;
+  }
+
+  void evaluate(VertexId v) {
+    ++version_[v];
+    if (!unexp_[v]) return;
+    const ClusterVertexStatus st = classify_cluster_vertex(m_, v, unexp_, ws_);
+    if (st.unexpanded_link.vertices == 0) automatic_.push_back(v);
+    else if (st.expandable) queue_.push({key_of(v, st), v, version_[v], static_cast<std::uint8_t>(st.manifold_k)});
+  }
+
+  void expand(VertexId v, std::uint8_t k) {
+    unexp_[v] = 0;
+    --cluster_;
+    ++version_[v];
+    r_.sequence.push_back(v);
+    r_.sequence_k.push_back(k);
+    nbrs_.clear();
+    for (TetId t : m_.tets_of(v))
+      for (VertexId w : m_.tet(t))
+        if (w != v && unexp_[w]) nbrs_.push_back(w);
+    std::sort(nbrs_.begin(), nbrs_.end());
+    nbrs_.erase(std::unique(nbrs_.begin(), nbrs_.end()), nbrs_.end());
+    for (VertexId w : nbrs_) evaluate(w);  // evaluate() does not touch nbrs_
+  }
+
+  void drain_automatic() {
+    while (!automatic_.empty()) {
+      const VertexId v = automatic_.back();
+      automatic_.pop_back();
+      if (!unexp_[v]) continue;
+      ++r_.automatic;
       expand(v, 255);
     }
-  };
+  }
 
-  for (VertexId v = 0; v < n; ++v)
-    if (unexp[v]) evaluate(v);
-  drain_automatic();
-  while (cluster > 0) {
-    bool found = false;
-    while (!queue.empty()) {
-      const Entry e = queue.top();
-      queue.pop();
-      if (!unexp[e.v] || e.version != version[e.v]) continue;  // stale
-      found = true;
+  // Expands the best current queue entry; false when none is current.
+  bool expand_next() {
+    while (!queue_.empty()) {
+      const Entry e = queue_.top();
+      queue_.pop();
+      if (!unexp_[e.v] || e.version != version_[e.v]) continue;  // stale
       // The entry is current: v's link has not changed since it was evaluated.
-      ++r.k_manifold_counts[e.k];
+      ++r_.k_manifold_counts[e.k];
       expand(e.v, e.k);
-      break;
+      return true;
     }
-    drain_automatic();
-    if (!found && cluster > 0) {
-      r.stuck = true;
-      break;
-    }
+    return false;
   }
-  if (r.stuck) {
-    for (VertexId v = 0; v < n; ++v)
-      if (unexp[v]) r.remaining.push_back(v);
-    const SubcomplexCounts c = subcomplex_counts(m, VertexSubset(unexp));
-    r.remaining_euler = c.euler;
-    r.remaining_components = c.components;
+
+  void report_remaining() {
+    for (VertexId v = 0; v < m_.num_vertices(); ++v)
+      if (unexp_[v]) r_.remaining.push_back(v);
+    const SubcomplexCounts c = subcomplex_counts(m_, VertexSubset(unexp_));
+    r_.remaining_euler = c.euler;
+    r_.remaining_components = c.components;
   }
-  return r;
+
+  const TetMesh& m_;
+  const ExpansionOrder& order_;
+  std::vector<char> unexp_;
+  std::vector<std::uint32_t> version_;
+  std::vector<std::uint64_t> rank_;
+  std::size_t cluster_ = 0;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue_;
+  std::vector<VertexId> automatic_;  // isolated cluster vertices waiting to be expanded
+  std::vector<VertexId> nbrs_;
+  ClusterLinkWorkspace ws_;
+  TopologicalExpansionResult r_;
+};
+
+}  // namespace
+
+TopologicalExpansionResult topological_expansion(const TetMesh& m, const ExpansionOrder& order,
+                                                 std::span<const char> initially_unexpanded) {
+  return GreedyExpansion(m, order, initially_unexpanded).run();
 }
 
 }  // namespace cmx::topology

@@ -8,7 +8,9 @@
 
 namespace cmx::python {
 
-void bind_topology_io(py::module_& m) {
+namespace {
+
+void bind_topology(py::module_& m) {
   m.def(
       "is_ball",
       [](const IndexArray& tets, std::size_t vertex_count) {
@@ -56,7 +58,9 @@ void bind_topology_io(py::module_& m) {
         return d;
       },
       py::arg("T"), py::arg("vertex_count"), py::arg("cluster_vertices"), py::arg("order"));
+}
 
+void bind_io(py::module_& m) {
   m.def(
       "read",
       [](const std::string& path) {
@@ -89,6 +93,13 @@ void bind_topology_io(py::module_& m) {
       },
       py::arg("path"), py::arg("points"), py::arg("points_exact"), py::arg("tets"), py::arg("target"),
       py::arg("target_exact"));
+}
+
+}  // namespace
+
+void bind_topology_io(py::module_& m) {
+  bind_topology(m);
+  bind_io(m);
 }
 
 }  // namespace cmx::python
