@@ -101,33 +101,27 @@ std::vector<io::Point3> exact(const std::vector<ExactPoint3>& points) {
   return out;
 }
 
-// The map as the writers take it: exact source and target, tets.
-struct ExactMap {
-  io::TetMap map;
-  std::size_t input_vertices = 0;
-};
-
 // One output file of the map; `doubles` are the target positions chosen by --snap, `fields` what
 // display formats carry besides (io/map_fields.hpp: source positions, added, volumes, angles).
-void write_map_file(const std::string& format, const std::string& path, const ExactMap& m,
+void write_map_file(const std::string& format, const std::string& path, const io::TetMap& m,
                     const std::vector<std::array<double, 3>>& doubles, const io::DisplayFields& fields) {
   if (format == "tmap") {
-    io::write_tmap(path, m.map);
+    io::write_tmap(path, m);
   } else if (format == "ovm") {
-    io::write_ovm(path, doubles, m.map.tets, &m.map.target);
+    io::write_ovm(path, doubles, m.tets, &m.target);
   } else {
-    io::write_display_mesh(path, doubles, m.map.tets, io::carries_display_fields(path) ? fields : io::DisplayFields{});
+    io::write_display_mesh(path, doubles, m.tets, io::carries_display_fields(path) ? fields : io::DisplayFields{});
   }
 }
 
 void write_outputs(const MapArgs& a, const cmx::MapResult& r) {
   if (a.out.empty()) return;
   const OutputPlan plan = output_plan(a);
-  const ExactMap m{io::TetMap{exact(r.source_exact), exact(r.target_exact), r.tets}, r.input_vertices};
+  const io::TetMap m{exact(r.source_exact), exact(r.target_exact), r.tets};
   const bool display = std::any_of(plan.formats.begin(), plan.formats.end(),
                                    [](const std::string& f) { return f != "tmap" && f != "ovm"; });
   const io::DisplayFields fields =
-      display ? io::map_display_fields(io::nearest_doubles(m.map.source), r.target, m.map.tets, m.input_vertices)
+      display ? io::map_display_fields(r.source, r.target, m.tets, r.input_vertices)  // r.source: nearest doubles
               : io::DisplayFields{};
   for (const std::string& f : plan.formats) write_map_file(f, plan.path(f), m, r.target, fields);
 }

@@ -5,36 +5,13 @@
 // Euler characteristic 1 or 2 (a connected planar surface with h boundary circles has 2 - h).
 // A connected 3-manifold in R^3 whose boundary is one 2-sphere is a ball (Alexander).
 #include <algorithm>
-#include <numeric>
 
 #include "algorithm/local/stars_growth.hpp"
+#include "topology/union_find.hpp"
 
 namespace cmx::algorithm::stars {
 
 namespace {
-
-// Union-find over 0..n-1, smallest index as root.
-class Components {
- public:
-  explicit Components(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::uint32_t(0)); }
-  std::uint32_t root(std::uint32_t i) {
-    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
-    return i;
-  }
-  void join(std::uint32_t a, std::uint32_t b) {
-    a = root(a);
-    b = root(b);
-    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-  }
-  std::size_t count() {
-    std::size_t n = 0;
-    for (std::uint32_t i = 0; i < parent_.size(); ++i) n += root(i) == i ? 1 : 0;
-    return n;
-  }
-
- private:
-  std::vector<std::uint32_t> parent_;
-};
 
 std::uint32_t index_in(const std::vector<std::uint32_t>& sorted, std::uint32_t x) {
   return std::uint32_t(std::lower_bound(sorted.begin(), sorted.end(), x) - sorted.begin());
@@ -56,7 +33,8 @@ std::optional<topology::Edge> GrowingStar::pinch_at(VertexId v) const {
   link.erase(std::unique(link.begin(), link.end()), link.end());
   // Per link vertex x: the star's tets around edge vx, and the faces with vx that two of them share.
   std::vector<std::uint32_t> fan_tets(link.size(), 0), fan_shared(link.size(), 0);
-  Components triangles(around.size());
+  topology::UnionFind triangles(around.size());
+  std::size_t pieces = around.size();  // of the link triangles, joined across shared edges
   std::size_t shared = 0;  // link edges in two link triangles
   for (std::uint32_t k = 0; k < around.size(); ++k) {
     const topology::Tet& tet = mesh_.tet(around[k]);
@@ -66,7 +44,7 @@ std::optional<topology::Edge> GrowingStar::pinch_at(VertexId v) const {
       const TetId nb = adjacency_.neighbor[around[k]][i];  // across the face opposite tet[i], which has v
       if (nb == topology::invalid_index || !contains(nb) || nb < around[k]) continue;
       ++shared;
-      triangles.join(k, index_in(around, nb));
+      if (triangles.unite(k, index_in(around, nb))) --pieces;
       for (std::uint8_t j = 0; j < 4; ++j)
         if (j != i && tet[j] != v) ++fan_shared[index_in(link, tet[j])];
     }
@@ -74,7 +52,7 @@ std::optional<topology::Edge> GrowingStar::pinch_at(VertexId v) const {
   for (std::size_t x = 0; x < link.size(); ++x)
     if (fan_tets[x] > fan_shared[x] + 1) return topology::Edge{v, link[x]};  // two runs or more
   const std::int64_t chi = std::int64_t(link.size()) - std::int64_t(3 * around.size() - shared) + std::int64_t(around.size());
-  if (triangles.count() != 1 || (chi != 1 && chi != 2)) return topology::Edge{v, v};
+  if (pieces != 1 || (chi != 1 && chi != 2)) return topology::Edge{v, v};
   return std::nullopt;
 }
 
@@ -87,13 +65,14 @@ bool GrowingStar::boundary_is_sphere() const {
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
   // A closed surface has 3F/2 edges: chi = V - F/2.
   if (std::int64_t(corners.size()) - std::int64_t(boundary_.size() / 2) != 2) return false;
-  Components pieces(corners.size());
+  topology::UnionFind uf(corners.size());
+  std::size_t pieces = corners.size();
   for (const FaceRef& f : boundary_) {
     const topology::Triangle t = triangle(f);
-    pieces.join(index_in(corners, t[0]), index_in(corners, t[1]));
-    pieces.join(index_in(corners, t[0]), index_in(corners, t[2]));
+    if (uf.unite(index_in(corners, t[0]), index_in(corners, t[1]))) --pieces;
+    if (uf.unite(index_in(corners, t[0]), index_in(corners, t[2]))) --pieces;
   }
-  return pieces.count() == 1;
+  return pieces == 1;
 }
 
 }  // namespace cmx::algorithm::stars
