@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "algorithm/invariants.hpp"
+#include "algorithm/verify/invariants.hpp"
 #include "algorithm/map_error.hpp"
 #include "kernel/orient.hpp"
 #include "topology/mesh_edits.hpp"

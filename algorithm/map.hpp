@@ -11,11 +11,11 @@
 #include <string_view>
 #include <vector>
 
-#include "algorithm/double_output.hpp"
+#include "algorithm/doubles/double_output.hpp"
 #include "algorithm/map_error.hpp"
-#include "algorithm/placement.hpp"
+#include "algorithm/expansion/placement.hpp"
 #include "algorithm/precision_loss.hpp"
-#include "algorithm/verify_map.hpp"
+#include "algorithm/verify/verify_map.hpp"
 #include "arith/rational.hpp"
 #include "kernel/filter_policy.hpp"
 #include "kernel/homogeneous_point.hpp"
@@ -86,7 +86,7 @@ struct MapOptions {
   bool collapse = true;                       // collapse added vertices when the map stays valid
   bool merge = true;                          // ... and merge them, moving the vertex kept (merge_pass.hpp)
   bool flip_collapse = true;                  // ... and re-cut stars by flips first (flip_collapse.hpp)
-  SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/double_output.hpp)
+  SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/doubles/double_output.hpp)
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
   bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)
   std::size_t subclusters = 4;                // largest subcluster expanded at once, 2..4 (Sec. 4.2.5); 0 or 1: off
@@ -123,7 +123,7 @@ struct LocalRepairStatistics {
 struct MapStatistics {
   std::size_t input_vertices = 0, input_tets = 0, input_boundary_vertices = 0, input_interior_vertices = 0;
   std::size_t input_rounded = 0;              // input coordinates a non-exact --arith rounded (it maps those)
-  // Preprocessing splits, by reason (algorithm/preprocess.hpp).
+  // Preprocessing splits, by reason (algorithm/problem/preprocess.hpp).
   std::size_t split_topology = 0;             // chord faces/edges: the cluster mesh must be simply connected
   std::size_t split_all_boundary_tet = 0;     // all-boundary tet not positive
   std::size_t split_no_shrink_point = 0;      // one-interior-vertex tet no shrink point could make positive

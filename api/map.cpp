@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <variant>
 
-#include "algorithm/boundary_shapes.hpp"
+#include "generators/boundary_shapes.hpp"
 #include "algorithm/map.hpp"
 #include "api/map_report.hpp"
 #include "arith/rational.hpp"
@@ -379,7 +379,7 @@ std::vector<std::uint32_t> boundary_vertices(std::span<const Tet> tets, std::siz
 
 ShapeBoundary boundary_for_shape(std::span<const Point3d> vertices, std::span<const Tet> tets,
                                  std::string_view shape) {
-  const auto spec = algorithm::parse_boundary_shape(shape);
+  const auto spec = generators::parse_boundary_shape(shape);
   if (!spec) throw Error("unknown shape '" + std::string(shape) + "' (cmx map --help lists the shapes)");
   std::vector<topology::Tet> ts;
   ts.reserve(tets.size());
@@ -390,7 +390,7 @@ ShapeBoundary boundary_for_shape(std::span<const Point3d> vertices, std::span<co
   }
   const topology::TetMesh mesh(vertices.size(), ts);
   if (const auto ball = topology::check_ball(mesh); !ball.ok) throw Error("not a ball: " + ball.message);
-  const algorithm::GeneratedBoundary g = algorithm::generate_boundary(
+  const generators::GeneratedBoundary g = generators::generate_boundary(
       mesh, std::vector<std::array<double, 3>>(vertices.begin(), vertices.end()), *spec);
   if (!g.ok) throw Error("no valid '" + std::string(shape) + "' boundary: " + g.message);
   return ShapeBoundary{g.vertices, g.positions};

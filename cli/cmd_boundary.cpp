@@ -1,6 +1,6 @@
 // cmx boundary MESH --shape SHAPE -o B.txt [--seed N]: prescribed boundary positions for a mapping
 // problem, generated on a tetrahedron, a stiff tetrahedron, the unit sphere or a random star shape
-// (algorithm/boundary_shapes.hpp describes the construction).
+// (generators/boundary_shapes.hpp describes the construction).
 //
 // MESH is read exactly (io::read_tet_mesh, orientation normalised) and must be a ball
 // (topology::check_ball). The generator works on the nearest doubles of the positions. The result
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithm/boundary_shapes.hpp"
+#include "generators/boundary_shapes.hpp"
 #include "arith/exact_decimal.hpp"
 #include "cli/command.hpp"
 #include "cli/command_line.hpp"
@@ -37,14 +37,14 @@ const HelpText help = {
 
 struct BoundaryArgs {
   std::string mesh, output, shape_text;
-  algorithm::BoundaryShapeSpec shape;
+  generators::BoundaryShapeSpec shape;
   std::optional<std::uint64_t> seed;
 };
 
 void add_options(CLI::App& app, BoundaryArgs& a) {
   app.add_option("MESH", a.mesh, ".ovm .vtk .vtu .mesh .msh .node/.ele")->required()->type_name("");
   const auto shape = [&a](const std::string& text) {
-    const auto spec = algorithm::parse_boundary_shape(text);
+    const auto spec = generators::parse_boundary_shape(text);
     if (!spec) throw std::invalid_argument("unknown shape '" + text + "' (tet, stiff-tet, sphere, star, star:SEED)");
     a.shape_text = text;
     return *spec;
@@ -65,8 +65,8 @@ void add_options(CLI::App& app, BoundaryArgs& a) {
 }
 
 // The shape with --seed applied; two different seeds are a contradiction.
-algorithm::BoundaryShapeSpec shape_with_seed(const BoundaryArgs& a) {
-  algorithm::BoundaryShapeSpec spec = a.shape;
+generators::BoundaryShapeSpec shape_with_seed(const BoundaryArgs& a) {
+  generators::BoundaryShapeSpec spec = a.shape;
   if (!a.seed) return spec;
   if (a.shape_text.find(':') != std::string::npos && *a.seed != spec.seed)
     usage_error("two different seeds given: " + a.shape_text + " and --seed " + std::to_string(*a.seed));
@@ -74,7 +74,7 @@ algorithm::BoundaryShapeSpec shape_with_seed(const BoundaryArgs& a) {
   return spec;
 }
 
-void write_boundary(const std::string& path, const algorithm::GeneratedBoundary& boundary) {
+void write_boundary(const std::string& path, const generators::GeneratedBoundary& boundary) {
   io::write_file_atomically(path, [&](std::ostream& out) {
     for (std::size_t i = 0; i < boundary.vertices.size(); ++i) {
       const auto& p = boundary.positions[i];
@@ -89,20 +89,20 @@ int run(const std::vector<std::string>& args) {
   CommandLine line("boundary", help);
   add_options(line.app(), a);
   if (const auto done = line.parse(args)) return *done;
-  const algorithm::BoundaryShapeSpec spec = shape_with_seed(a);
+  const generators::BoundaryShapeSpec spec = shape_with_seed(a);
   check_outputs_apart({a.output}, mesh_files(a.mesh));
   check_writable({a.output});
   const io::TetMeshData data = read_mesh(a.mesh);
   const topology::TetMesh mesh(data.positions.size(), data.tets);
   if (const auto ball = topology::check_ball(mesh); !ball.ok)
     throw Failure(exit_invalid_problem, a.mesh + " is not a ball: " + ball.message);
-  const auto boundary = algorithm::generate_boundary(mesh, io::nearest_doubles(data.positions), spec);
+  const auto boundary = generators::generate_boundary(mesh, io::nearest_doubles(data.positions), spec);
   if (!boundary.ok) throw Failure(exit_invalid_problem, a.mesh + ": no valid '" + a.shape_text + "' boundary: " + boundary.message);
-  if (const auto why = algorithm::check_star_shaped_about_origin(mesh, boundary); !why.empty())
+  if (const auto why = generators::check_star_shaped_about_origin(mesh, boundary); !why.empty())
     throw Failure(exit_internal, "internal error: the generated boundary fails verification: " + why);
   write_boundary(a.output, boundary);
   note("wrote " + a.output + ": " + std::to_string(boundary.vertices.size()) + " boundary vertices, shape " +
-       algorithm::to_string(spec) + ", " + std::to_string(boundary.attempts) + " attempt" + (boundary.attempts == 1 ? "" : "s"));
+       generators::to_string(spec) + ", " + std::to_string(boundary.attempts) + " attempt" + (boundary.attempts == 1 ? "" : "s"));
   return exit_ok;
 }
 

@@ -1,5 +1,5 @@
 // cmx generate-mesh --shape SHAPE [--perturb SEED] [--amplitude A] -o OUT: writes one of the
-// project's own test domains (algorithm/domain_generators.hpp), so that tests and datasets need
+// project's own test domains (generators/domain_generators.hpp), so that tests and datasets need
 // no external mesher:
 //   grid:NX,NY,NZ      Freudenthal grid of NX*NY*NZ unit cells
 //   ball:R             voxelised ball of radius R cells, centred at the origin
@@ -18,7 +18,7 @@
 #include <string_view>
 #include <vector>
 
-#include "algorithm/domain_generators.hpp"
+#include "generators/domain_generators.hpp"
 #include "cli/command.hpp"
 #include "cli/command_line.hpp"
 #include "cli/files.hpp"
@@ -124,17 +124,17 @@ void add_options(CLI::App& app, GenerateArgs& a) {
       ->required();
 }
 
-algorithm::GeneratedDomain generate(const GenerateArgs& a) {
+generators::GeneratedDomain generate(const GenerateArgs& a) {
   const std::uint64_t seed = a.seed.value_or(0);
-  const double amplitude = a.seed ? a.amplitude.value_or(algorithm::default_perturb_amplitude) : 0;
+  const double amplitude = a.seed ? a.amplitude.value_or(generators::default_perturb_amplitude) : 0;
   const auto& d = a.shape.dims;
   try {
     switch (a.shape.kind) {
-      case 'g': return algorithm::perturbed_grid(d[0], d[1], d[2], seed, amplitude);
-      case 'b': return algorithm::voxel_ball(d[0], seed, amplitude);
-      case 'h': return algorithm::bings_house(d[0], seed, amplitude);
-      case 'k': return algorithm::knotted_hole(seed, amplitude);
-      default: return algorithm::thin_slab(d[0], d[1], seed, d.size() == 3 ? d[2] : 1, amplitude);
+      case 'g': return generators::perturbed_grid(d[0], d[1], d[2], seed, amplitude);
+      case 'b': return generators::voxel_ball(d[0], seed, amplitude);
+      case 'h': return generators::bings_house(d[0], seed, amplitude);
+      case 'k': return generators::knotted_hole(seed, amplitude);
+      default: return generators::thin_slab(d[0], d[1], seed, d.size() == 3 ? d[2] : 1, amplitude);
     }
   } catch (const std::invalid_argument& e) {
     usage_error(e.what());
@@ -148,7 +148,7 @@ int run(const std::vector<std::string>& args) {
   if (const auto done = line.parse(args)) return *done;
   if (a.amplitude && !a.seed) usage_error("--amplitude needs --perturb SEED");
   check_writable({a.output});
-  algorithm::GeneratedDomain domain = generate(a);
+  generators::GeneratedDomain domain = generate(a);
   io::TetMeshData data;
   data.positions = std::move(domain.positions);
   for (auto t : domain.mesh.live_tets()) data.tets.push_back(domain.mesh.tet(t));

@@ -1,6 +1,6 @@
 #include "cli/map_args.hpp"
 
-#include "algorithm/boundary_shapes.hpp"
+#include "generators/boundary_shapes.hpp"
 #include "cli/command_line.hpp"
 #include "cli/common_options.hpp"
 #include "cli/option_values.hpp"
@@ -43,7 +43,7 @@ void add_problem_options(CLI::App& app, MapArgs& a) {
   app.add_option("--codomain", a.codomain, "a mesh with DOMAIN's connectivity whose boundary vertices give\nthe positions")
       ->type_name("MESH");
   const auto shape = [](const std::string& text) {
-    if (!algorithm::parse_boundary_shape(text))
+    if (!generators::parse_boundary_shape(text))
       throw std::invalid_argument(one_of("shape", text, "tet, stiff-tet, sphere, star[:SEED]"));
     return text;
   };

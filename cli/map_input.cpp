@@ -1,6 +1,6 @@
 #include "cli/map_input.hpp"
 
-#include "algorithm/boundary_shapes.hpp"
+#include "generators/boundary_shapes.hpp"
 #include "arith/rounding.hpp"
 #include "io/boundary.hpp"
 #include "io/io_error.hpp"
@@ -13,7 +13,7 @@ namespace {
 
 // Generated boundary positions (doubles, exactly) for the domain's boundary vertices.
 io::BoundaryPositions generated_boundary(const io::TetMeshData& mesh, const std::string& shape, std::uint64_t seed) {
-  auto spec = algorithm::parse_boundary_shape(shape);
+  auto spec = generators::parse_boundary_shape(shape);
   if (!spec)
     throw algorithm::MapError(algorithm::MapErrorKind::invalid_input,
                               "unknown shape '" + shape + "' (tet, stiff-tet, sphere, star[:SEED])");
@@ -23,7 +23,7 @@ io::BoundaryPositions generated_boundary(const io::TetMeshData& mesh, const std:
   std::vector<std::array<double, 3>> source;
   source.reserve(mesh.positions.size());
   for (const auto& p : mesh.positions) source.push_back({to_double(p[0]), to_double(p[1]), to_double(p[2])});
-  const algorithm::GeneratedBoundary g = algorithm::generate_boundary(tm, source, *spec);
+  const generators::GeneratedBoundary g = generators::generate_boundary(tm, source, *spec);
   if (!g.ok)
     throw algorithm::MapError(algorithm::MapErrorKind::invalid_input, "no valid '" + shape + "' boundary: " + g.message);
   io::BoundaryPositions b;

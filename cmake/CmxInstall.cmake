@@ -23,7 +23,7 @@ install(FILES ${PROJECT_BINARY_DIR}/cmxConfig.cmake ${PROJECT_BINARY_DIR}/cmxCon
 # pkg-config: the static libraries in link order (a user before what it uses; the order of
 # cmx_api's private links in api/CMakeLists.txt); a layer without sources has no library.
 set(CMX_PC_LIBS "")
-foreach(target cmx_api cmx_algorithm cmx_io cmx_lp cmx_topology cmx_kernel cmx_arith)
+foreach(target cmx_api cmx_algorithm cmx_generators cmx_io cmx_lp cmx_topology cmx_kernel cmx_arith)
   get_target_property(type ${target} TYPE)
   if(type STREQUAL "STATIC_LIBRARY")
     string(APPEND CMX_PC_LIBS " -l${target}")

@@ -70,7 +70,7 @@ class ClusterLinkWorkspace {
                                                                std::span<const char> unexpanded);
 
 // The cluster mesh M• (full subcomplex on the unexpanded vertices): counts, chi and b0.
-// O(T log d). The method keeps b0 = 1 and chi = 1 (algorithm/invariants.hpp).
+// O(T log d). The method keeps b0 = 1 and chi = 1 (algorithm/verify/invariants.hpp).
 [[nodiscard]] SubcomplexCounts cluster_mesh_counts(const TetMesh& m, std::span<const char> unexpanded);
 // A tet is degenerate exactly when it has two or more unexpanded vertices (invariant 2).
 [[nodiscard]] bool is_degenerate_tet(const Tet& t, std::span<const char> unexpanded);

@@ -11,7 +11,7 @@
 #include "algorithm/local/initial_map.hpp"
 #include "algorithm/local/stars.hpp"
 #include "algorithm/map_error.hpp"
-#include "algorithm/output_statistics.hpp"
+#include "algorithm/verify/output_statistics.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
 #include "topology/complex_queries.hpp"

@@ -15,7 +15,7 @@
 // the double output re-rounds only what the stars changed.
 #include "algorithm/map.hpp"
 #include "algorithm/run_control.hpp"
-#include "algorithm/validate_problem.hpp"
+#include "algorithm/problem/validate_problem.hpp"
 
 namespace cmx::algorithm {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithm/placement.hpp"
+#include "algorithm/expansion/placement.hpp"
 #include "algorithm/run_control.hpp"
 #include "kernel/homogeneous_point.hpp"
 #include "topology/tet_mesh.hpp"

@@ -3,7 +3,7 @@
 #include <bit>
 #include <utility>
 
-#include "algorithm/expansion_cone.hpp"
+#include "algorithm/expansion/expansion_cone.hpp"
 
 namespace cmx::algorithm::stars {
 

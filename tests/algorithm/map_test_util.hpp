@@ -1,14 +1,14 @@
 #pragma once
 // Mapping problems built from the project's own generators (no data written by others): domains
-// from algorithm/domain_generators.hpp or TetGen balls, boundaries from the four generated shapes.
+// from generators/domain_generators.hpp or TetGen balls, boundaries from the four generated shapes.
 #include <doctest/doctest.h>
 
 #include <array>
 #include <string>
 #include <vector>
 
-#include "algorithm/boundary_shapes.hpp"
-#include "algorithm/domain_generators.hpp"
+#include "generators/boundary_shapes.hpp"
+#include "generators/domain_generators.hpp"
 #include "algorithm/embedding.hpp"
 #include "algorithm/map.hpp"
 #include "arith/rational.hpp"
@@ -21,9 +21,9 @@ inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh,
                                           const std::vector<algorithm::Point3>& source,
                                           const std::vector<std::array<double, 3>>& source_doubles,
                                           const std::string& shape) {
-  const auto spec = algorithm::parse_boundary_shape(shape);
+  const auto spec = generators::parse_boundary_shape(shape);
   REQUIRE(spec);
-  const algorithm::GeneratedBoundary b = algorithm::generate_boundary(mesh, source_doubles, *spec);
+  const generators::GeneratedBoundary b = generators::generate_boundary(mesh, source_doubles, *spec);
   REQUIRE_MESSAGE(b.ok, b.message);
   algorithm::MapProblem p;
   for (topology::TetId t : mesh.live_tets()) p.tets.push_back(mesh.tet(t));
@@ -35,7 +35,7 @@ inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh,
   return p;
 }
 
-inline algorithm::MapProblem problem_from(const algorithm::GeneratedDomain& d, const std::string& shape) {
+inline algorithm::MapProblem problem_from(const generators::GeneratedDomain& d, const std::string& shape) {
   return problem_from(d.mesh, d.positions, d.double_positions(), shape);
 }
 
@@ -57,7 +57,7 @@ inline std::vector<topology::Tet> live_tet_tuples(const algorithm::Embedding& e)
 
 // The mesh's own boundary positions as the prescribed boundary (a trivially valid problem when
 // the domain is star-shaped around its kernel).
-inline algorithm::MapProblem identity_problem(const algorithm::GeneratedDomain& d) {
+inline algorithm::MapProblem identity_problem(const generators::GeneratedDomain& d) {
   algorithm::MapProblem p;
   for (topology::TetId t : d.mesh.live_tets()) p.tets.push_back(d.mesh.tet(t));
   p.source = d.positions;

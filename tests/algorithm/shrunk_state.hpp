@@ -5,9 +5,9 @@
 
 #include <vector>
 
-#include "algorithm/invariants.hpp"
-#include "algorithm/preprocess.hpp"
-#include "algorithm/validate_problem.hpp"
+#include "algorithm/verify/invariants.hpp"
+#include "algorithm/problem/preprocess.hpp"
+#include "algorithm/problem/validate_problem.hpp"
 
 namespace cmx::test {
 

@@ -1,4 +1,4 @@
-// Opening crowds around the shrink point before rounding (algorithm/decrowd.hpp): a crowd made
+// Opening crowds around the shrink point before rounding (algorithm/doubles/decrowd.hpp): a crowd made
 // by shrinking vertices toward p_c far below double resolution is scaled back open by a
 // homothety, and a vertex pushed into p_c is re-centred out by a sweep; the exact map stays valid.
 #include <doctest/doctest.h>
@@ -7,9 +7,9 @@
 #include <cmath>
 #include <optional>
 
-#include "algorithm/decrowd.hpp"
-#include "algorithm/double_output.hpp"
-#include "algorithm/expansion_cone.hpp"
+#include "algorithm/doubles/decrowd.hpp"
+#include "algorithm/doubles/double_output.hpp"
+#include "algorithm/expansion/expansion_cone.hpp"
 #include "algorithm/map.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
@@ -18,6 +18,7 @@
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 using cmx::test::embedding_of;
 using cmx::test::map_checked;
 using cmx::test::problem_from;

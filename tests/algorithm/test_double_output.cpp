@@ -7,8 +7,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "algorithm/double_output.hpp"
-#include "algorithm/expansion_cone.hpp"
+#include "algorithm/doubles/double_output.hpp"
+#include "algorithm/expansion/expansion_cone.hpp"
 #include "algorithm/map.hpp"
 #include "algorithm/run_control.hpp"
 #include "arith/rounding.hpp"
@@ -18,6 +18,7 @@
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 using cmx::test::map_checked;
 using cmx::test::problem_from;
 

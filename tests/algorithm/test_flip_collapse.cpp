@@ -1,4 +1,4 @@
-// Flip collapses (algorithm/flip_collapse.hpp): flips of an added vertex's star, each keeping
+// Flip collapses (algorithm/collapse/flip_collapse.hpp): flips of an added vertex's star, each keeping
 // every tet positive, until the vertex collapses into a neighbour; the map stays valid, no
 // vertex moves, and a refused search leaves the mesh as it was.
 #include <doctest/doctest.h>
@@ -9,14 +9,15 @@
 #include <string>
 #include <vector>
 
-#include "algorithm/flip_collapse.hpp"
+#include "algorithm/collapse/flip_collapse.hpp"
 #include "algorithm/map.hpp"
-#include "algorithm/merge_pass.hpp"
+#include "algorithm/collapse/merge_pass.hpp"
 #include "map_test_util.hpp"
 #include "topology/consistency.hpp"
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 using namespace cmx::test;
 
 namespace {

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithm/domain_generators.hpp"
+#include "generators/domain_generators.hpp"
 #include "algorithm/local/initial_map.hpp"
 #include "arith/rational.hpp"
 #include "arith/rounding.hpp"
@@ -26,6 +26,7 @@
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 
 namespace {
 

@@ -7,12 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "algorithm/domain_generators.hpp"
+#include "generators/domain_generators.hpp"
 #include "algorithm/map.hpp"
 #include "map_test_util.hpp"
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 using namespace cmx::test;
 
 namespace {

@@ -3,7 +3,7 @@
 #include <doctest/doctest.h>
 
 #include "algorithm/map.hpp"
-#include "algorithm/verify_map.hpp"
+#include "algorithm/verify/verify_map.hpp"
 #include "map_test_util.hpp"
 #include "topology/generators.hpp"
 
@@ -13,6 +13,7 @@
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 using cmx::test::map_checked;
 using cmx::test::problem_from;
 

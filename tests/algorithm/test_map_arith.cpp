@@ -11,6 +11,7 @@
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 using cmx::test::problem_from;
 
 namespace {

@@ -9,6 +9,7 @@
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 
 namespace {
 

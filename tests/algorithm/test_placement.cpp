@@ -3,13 +3,14 @@
 // path apart from its own orientation checks), and it declines where it does not apply.
 #include <doctest/doctest.h>
 
-#include "algorithm/expansion_cone.hpp"
-#include "algorithm/placement.hpp"
+#include "algorithm/expansion/expansion_cone.hpp"
+#include "algorithm/expansion/placement.hpp"
 #include "map_test_util.hpp"
 #include "shrunk_state.hpp"
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 
 TEST_CASE(
     "a float-centre placement is strictly inside the exact cone and keeps a margin like the dyadic policy") {

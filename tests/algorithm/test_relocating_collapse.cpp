@@ -1,4 +1,4 @@
-// Relocating collapses (algorithm/relocating_collapse.hpp): an added vertex is collapsed into a
+// Relocating collapses (algorithm/collapse/relocating_collapse.hpp): an added vertex is collapsed into a
 // neighbour that stays put while other added vertices move out of the way; the map stays valid,
 // and a refused collapse changes nothing.
 #include <doctest/doctest.h>
@@ -10,11 +10,12 @@
 #include <vector>
 
 #include "algorithm/map.hpp"
-#include "algorithm/relocating_collapse.hpp"
+#include "algorithm/collapse/relocating_collapse.hpp"
 #include "map_test_util.hpp"
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 using namespace cmx::test;
 
 TEST_CASE("a relocating collapse removes an added vertex by moving others and keeps every tet positive") {

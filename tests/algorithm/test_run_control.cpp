@@ -11,13 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "algorithm/domain_generators.hpp"
+#include "generators/domain_generators.hpp"
 #include "algorithm/map.hpp"
 #include "algorithm/run_control.hpp"
 #include "map_test_util.hpp"
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 using cmx::test::problem_from;
 
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithm/shelling_fallback.hpp"
+#include "algorithm/refinement/shelling_fallback.hpp"
 #include "topology/nobuenoss.hpp"
 
 namespace {

@@ -14,6 +14,7 @@
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 using cmx::test::check_independently;
 using cmx::test::count_defects;
 using cmx::test::identity_map;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "algorithm/domain_generators.hpp"
+#include "generators/domain_generators.hpp"
 #include "algorithm/local/stars.hpp"
 #include "arith/rational.hpp"
 #include "arith/rounding.hpp"
@@ -29,7 +29,7 @@ namespace cmx::test {
 // star: a jittered cube is for small grids, not always (9 cells, seed 11 is not), so
 // identity_map requires it.
 struct InitialMap {
-  algorithm::GeneratedDomain domain;
+  generators::GeneratedDomain domain;
   std::vector<HPoint> target;
   std::vector<char> boundary;  // boundary vertex flags
   [[nodiscard]] const topology::TetMesh& mesh() const { return domain.mesh; }
@@ -45,14 +45,14 @@ inline bool boundary_star_shaped(const InitialMap& m) {
 }
 
 inline InitialMap identity_map_unchecked(std::uint32_t cells, std::uint64_t seed, double amplitude) {
-  InitialMap m{algorithm::perturbed_grid(cells, cells, cells, seed, amplitude), {}, {}};
+  InitialMap m{generators::perturbed_grid(cells, cells, cells, seed, amplitude), {}, {}};
   for (const auto& p : m.domain.positions) m.target.emplace_back(p[0], p[1], p[2]);
   m.boundary = topology::boundary_vertex_flags(m.domain.mesh);
   return m;
 }
 
 inline InitialMap identity_map(std::uint32_t cells, std::uint64_t seed = 1,
-                               double amplitude = algorithm::default_perturb_amplitude) {
+                               double amplitude = generators::default_perturb_amplitude) {
   InitialMap m = identity_map_unchecked(cells, seed, amplitude);
   REQUIRE_MESSAGE(boundary_star_shaped(m), "the jittered grid's boundary is not star-shaped: choose another seed");
   return m;

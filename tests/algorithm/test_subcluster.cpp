@@ -5,15 +5,16 @@
 
 #include <algorithm>
 
-#include "algorithm/invariants.hpp"
-#include "algorithm/preprocess.hpp"
-#include "algorithm/subcluster.hpp"
-#include "algorithm/validate_problem.hpp"
+#include "algorithm/verify/invariants.hpp"
+#include "algorithm/problem/preprocess.hpp"
+#include "algorithm/expansion/subcluster.hpp"
+#include "algorithm/problem/validate_problem.hpp"
 #include "map_test_util.hpp"
 #include "shrunk_state.hpp"
 
 using namespace cmx;
 using namespace cmx::algorithm;
+using namespace cmx::generators;
 
 using cmx::test::Shrunk;
 using cmx::test::shrunk;

@@ -4,7 +4,7 @@
 #include <doctest/doctest.h>
 
 #include "../kernel/orient_cases.hpp"
-#include "algorithm/verify_map.hpp"
+#include "algorithm/verify/verify_map.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient_exact.hpp"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "algorithm/domain_generators.hpp"
+#include "generators/domain_generators.hpp"
 #include "algorithm/map.hpp"
 #include "arith/rational.hpp"
 #include "arith/rounding.hpp"
@@ -20,7 +20,7 @@ struct Arrays {
 
 // A perturbed 3x3x3 grid (one interior layer): small, yet a real map (interior vertices move).
 Arrays grid() {
-  const cmx::algorithm::GeneratedDomain d = cmx::algorithm::perturbed_grid(3, 3, 3, 7);
+  const cmx::generators::GeneratedDomain d = cmx::generators::perturbed_grid(3, 3, 3, 7);
   Arrays a;
   a.vertices = d.double_positions();
   for (const auto t : d.mesh.live_tets()) {

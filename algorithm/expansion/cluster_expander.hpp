@@ -1,0 +1,170 @@
+#pragma once
+// The expansion loop of paper Alg. 1 as one object (internal to algorithm/, used through
+// cluster_expansion.hpp): its queue, classification and bookkeeping are defined in
+// cluster_expansion.cpp, the local refinement it falls back on (relaxation, pushes, bends,
+// inflation) in local_refinement.cpp.
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <queue>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "algorithm/expansion/cluster_expansion.hpp"
+#include "algorithm/expansion/cone_base.hpp"
+#include "algorithm/expansion/expansion_cone.hpp"
+#include "algorithm/expansion/placement.hpp"
+#include "topology/cluster_links.hpp"
+
+namespace cmx::algorithm::detail {
+
+enum class Kind : std::uint8_t { automatic = 0, simple = 1, star_shapify = 2, inflate = 3 };
+
+struct Entry {
+  std::array<std::int64_t, 4> key;
+  std::uint32_t version;
+  VertexId v;
+  Kind kind;
+  std::uint8_t k;  // k-manifold expandability (0: other)
+  bool operator>(const Entry& o) const { return key > o.key; }
+};
+
+// Depth of local refinement: a star-shapification or inflation expands the vertices it pushes
+// right away, refining them in turn up to this depth; deeper, they go back to the queue.
+constexpr int max_depth = 3;
+
+// Sets the trace label for a scope and restores the previous one on exit.
+class Relabel {
+ public:
+  Relabel(const char*& label, const char* now) : label_(label), saved_(label) { label_ = now; }
+  ~Relabel() { label_ = saved_; }
+  Relabel(const Relabel&) = delete;
+  Relabel& operator=(const Relabel&) = delete;
+
+ private:
+  const char*& label_;
+  const char* saved_;
+};
+
+class ClusterExpander {
+ public:
+  ClusterExpander(Embedding& e, const ExpansionSettings& s, MapStatistics& stats)
+      : e_(e), s_(s), stats_(stats) {}
+
+  ExpansionOutcome run();
+
+ private:
+  // --- bookkeeping -------------------------------------------------------------------------
+
+  void grow();
+  void dirty(VertexId v);
+  void dirty_star(VertexId v);
+  void flush_dirty();
+  std::optional<Entry> pop();
+  std::optional<ExpansionOutcome> check_limits() const;
+  ExpansionOutcome stuck() const;
+  void report_progress(bool final);
+
+  // --- classification ----------------------------------------------------------------------
+
+  std::array<std::int64_t, 4> key(Kind kind, int k, std::uint32_t expanded_neighbors, VertexId v) const;
+  void evaluate(VertexId v);
+  Kind refinement_kind(VertexId v);
+  Placement place(const ExpansionCone& cone, const VertexId* witness);
+
+  // --- the loop's operations ---------------------------------------------------------------
+
+  void handle(const Entry& entry);
+  void expand_to(VertexId v, const HPoint& position, int k, const Placement* placement = nullptr);
+  void after_expansion(VertexId v, int k, const Placement* placement);
+  void trace_row(VertexId v, const HPoint& position, const Placement* placement) const;
+  void require_valid(VertexId v, const char* action, const Placement* placement) const;
+  void check_all(const std::string& when) const;
+  VertexId push(VertexId c, VertexId b);
+  void undo_push(VertexId c, VertexId x);
+
+  // --- subcluster expansion (paper Sec. 4.2.5, subcluster.hpp) ------------------------------
+  bool expand_subcluster(VertexId v);
+
+  // --- post-star-shapification collapses (paper Sec. 4.2.2) ---------------------------------
+  void collapse_added_since(std::size_t first);
+
+  // --- smoothing (paper Sec. 4.2.4) -------------------------------------------------------------
+  void smooth_recent();
+  bool touches_cluster(VertexId b) const;
+  void smooth_vertex(VertexId b);
+
+  // --- local refinement ----------------------------------------------------------------------
+
+  bool refine_and_expand(VertexId v, int depth);
+  bool try_simple(VertexId v, int k);
+
+  // --- relaxation: re-centring the cone base ---------------------------------------------------
+  bool relax_base(VertexId v);
+  bool recentre(VertexId b);
+
+  // --- star-shapification by pushes ------------------------------------------------------------
+  // A push moves a base vertex b of v out of v's base: the spoke (v, b) is split at a new cluster
+  // vertex at p_c. Base vertices are pushed away from a kept triangle T until v's cone has
+  // interior; it has when the base is T alone (a triangle's cone always has interior), so at most
+  // |base| - 3 pushes are needed. Pushes are chosen on a virtual state first (the chosen vertices
+  // flagged as cluster vertices at p_c, which is exactly v's star after the real pushes) and made
+  // only when they succeed, then v is expanded, then the pushed vertices, last first, each now
+  // between v and its base vertex.
+
+  bool star_shapify(VertexId v, int k, int depth, bool leaves);
+
+  // --- star-shapification by bends ------------------------------------------------------------
+  // A bend of base vertex b of v splits the spoke (v, b) at a new vertex b' and places b' at once
+  // as an expanded vertex, v still at p_c. Its star is the spoke's tets: those with b' in place of
+  // v (b' inside the fan of b) and those with b' in place of b (v at p_c). With v in the cluster
+  // the new vertex's cone is a fan around b, which always has interior; so every bend is possible
+  // and keeps every invariant, and the cluster never grows. For v, b' replaces b in its link with
+  // another direction from p_c: bending the endpoints of the base boundary edges that hide the
+  // aim point (the centroid of a base triangle) from p_c, with the extra linear constraints that
+  // the two new boundary edges at b' show it, straightens the cone until it has interior.
+  // Bends are computed on a virtual state (b moved to b's position, which is exactly v's star
+  // after the real split) and made only when v's cone has interior.
+
+  bool bend_and_expand(VertexId v, int k);
+  std::vector<std::pair<int, VertexId>> blockers(VertexId v, const HPoint& aim) const;
+  std::optional<VertexId> choose_push(VertexId v, VertexId w, const std::array<VertexId, 3>& keep,
+                                      ConeBase& base, bool leaves) const;
+
+  // --- inflation -----------------------------------------------------------------------------
+  // A base edge (a, b) in no base triangle has cluster vertices u, u' on both sides in Lk(v): the
+  // side planes through p_c, a, b face each other and flatten the kernel (paper Sec. 3.1, Fig. 4).
+  // Inflation splits the edge (b, u) (or (a, u), (b, u'), (a, u')) at a new vertex x, pushed to
+  // p_c and expanded at once (its unexpanded link is the cone from u, so Eq. (1) holds); (a, b, x)
+  // is then a base triangle of v. An x that cannot be expanded is collapsed back into u, which
+  // restores the mesh exactly: inflation never leaves refinement behind without progress.
+  // Attempts per vertex are bounded; the refinement budget bounds the total.
+
+  bool inflate(VertexId v, int depth);
+  bool push_until_star_shaped(VertexId v, int k);
+  bool paper_inflate(VertexId v, int depth);
+  bool isolate(VertexId x);
+  Embedding& e_;
+  const ExpansionSettings& s_;
+  MapStatistics& stats_;
+  topology::ClusterLinkWorkspace ws_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
+  std::vector<std::uint32_t> version_;
+  std::vector<std::optional<Placement>> cached_;
+  std::vector<std::optional<std::array<double, 3>>>
+      float_centre_;  // of a cone guessed open, from classification
+  std::vector<char> is_dirty_;
+  std::vector<VertexId> dirty_;
+  std::unordered_map<VertexId, int> inflations_, relaxed_moves_;
+  std::size_t cluster_ = 0, expanded_ = 0, failures_ = 0, max_bits_ = 0;
+  bool aggressive_ = false;
+  std::vector<VertexId> recent_;  // expanded since the last smoothing
+  std::size_t next_smooth_ = 0;
+  std::vector<char> guess_wrong_;  // 1: the float guess of v's cone was wrong once; decide exactly
+  const char* label_ = "";         // the kind of expansion under way, for the trace
+  std::chrono::steady_clock::time_point last_report_{};
+};
+
+}  // namespace cmx::algorithm::detail

@@ -1,0 +1,445 @@
+#include "algorithm/expansion/cluster_expansion.hpp"
+
+#include <algorithm>
+
+#include "algorithm/expansion/cluster_expander.hpp"
+#include "algorithm/collapse/collapse_pass.hpp"
+#include "algorithm/verify/invariants.hpp"
+#include "algorithm/map_error.hpp"
+#include "algorithm/expansion/smoothing.hpp"
+#include "algorithm/expansion/subcluster.hpp"
+#include "algorithm/expansion/trace_row.hpp"
+#include "topology/complex_queries.hpp"
+#include "topology/mesh_edits.hpp"
+
+namespace cmx::algorithm {
+
+namespace detail {
+
+namespace {
+
+std::uint64_t splitmix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+}  // namespace
+
+ExpansionOutcome ClusterExpander::run() {
+  for (VertexId v = 0; v < e_.num_vertices(); ++v)
+    if (e_.unexpanded[v]) {
+      ++cluster_;
+      dirty(v);
+    }
+  flush_dirty();
+  while (cluster_ > 0) {
+    if (auto stop = check_limits()) return *stop;
+    report_progress(false);
+    const std::optional<Entry> next = pop();
+    if (!next) {
+      // Every candidate failed: one more round in which refinement may also push dangling
+      // leaves and inflate around cut vertices (heavier, and prone to chains of refinement, so
+      // only when nothing else is left).
+      if (aggressive_ || failures_ == 0) return stuck();
+      aggressive_ = true;
+      for (VertexId v = 0; v < e_.num_vertices(); ++v)
+        if (e_.unexpanded[v]) dirty(v);
+      flush_dirty();
+      continue;
+    }
+    const std::size_t before = cluster_;
+    try {
+      handle(*next);
+    } catch (PrecisionLost& lost) {
+      if (lost.loss().phase == "split") {  // a split's loss knows neither the step nor the operation
+        lost.loss().step = expanded_;
+        lost.loss().phase = std::string(label_) + " (split)";
+      }
+      throw;
+    }
+    if (cluster_ < before) aggressive_ = false;
+    if (s_.smooth_every && expanded_ >= next_smooth_) {
+      smooth_recent();
+      next_smooth_ = expanded_ + s_.smooth_every;
+    }
+    flush_dirty();
+  }
+  report_progress(true);
+  return {MapOutcome::success, {}};
+}
+
+void ClusterExpander::grow() {
+  version_.resize(e_.num_vertices(), 0);
+  cached_.resize(e_.num_vertices());
+  float_centre_.resize(e_.num_vertices());
+  guess_wrong_.resize(e_.num_vertices(), 0);
+  is_dirty_.resize(e_.num_vertices(), 0);
+}
+
+void ClusterExpander::dirty(VertexId v) {
+  grow();
+  if (!is_dirty_[v]) {
+    is_dirty_[v] = 1;
+    dirty_.push_back(v);
+  }
+}
+
+// Every cluster vertex of every tet around v (v included).
+void ClusterExpander::dirty_star(VertexId v) {
+  for (TetId t : e_.mesh.tets_of(v))
+    for (VertexId w : e_.mesh.tet(t))
+      if (e_.unexpanded[w]) dirty(w);
+}
+
+void ClusterExpander::flush_dirty() {
+  while (!dirty_.empty()) {
+    const VertexId v = dirty_.back();
+    dirty_.pop_back();
+    is_dirty_[v] = 0;
+    evaluate(v);
+  }
+}
+
+std::optional<Entry> ClusterExpander::pop() {
+  while (!queue_.empty()) {
+    const Entry top = queue_.top();
+    queue_.pop();
+    if (top.version == version_[top.v] && e_.unexpanded[top.v]) return top;
+  }
+  return std::nullopt;
+}
+
+std::optional<ExpansionOutcome> ClusterExpander::check_limits() const {
+  if (s_.control && s_.control->should_stop("expansion"))
+    return ExpansionOutcome{MapOutcome::time_limit,
+                            "time limit reached with " + std::to_string(cluster_) + " cluster vertices left"};
+  if (s_.vertex_budget && e_.num_vertices() > s_.vertex_budget)
+    return ExpansionOutcome{MapOutcome::stuck, "refinement budget exhausted (" +
+                                                   std::to_string(e_.num_vertices()) + " vertices) with " +
+                                                   std::to_string(cluster_) + " cluster vertices left"};
+  return std::nullopt;
+}
+
+ExpansionOutcome ClusterExpander::stuck() const {
+  if (failures_ == 0)
+    return {MapOutcome::stuck,
+            "NOBUENOSS: " + std::to_string(cluster_) +
+                " cluster vertices left and none satisfies Eq. (1) (b0 = chi = 1 of its unexpanded link)",
+            true};
+  return {MapOutcome::stuck, std::to_string(cluster_) +
+                                 " cluster vertices left; star-shapification or inflation "
+                                 "failed for every remaining candidate"};
+}
+
+void ClusterExpander::report_progress(bool final) {
+  if (!s_.progress) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (!final && now - last_report_ < std::chrono::milliseconds(200)) return;
+  last_report_ = now;
+  MapProgress p;
+  p.expanded = expanded_;
+  p.remaining = cluster_;
+  p.splits = e_.num_vertices() - s_.input_vertices;
+  p.max_bits = max_bits_;
+  p.seconds = std::chrono::duration<double>(now - s_.start).count();
+  s_.progress(p);
+}
+
+// The class always comes first: refinement only when no simple expansion is left, whatever the
+// order among equals (paper Sec. 4.1.2 for `priority`).
+std::array<std::int64_t, 4> ClusterExpander::key(Kind kind, int k, std::uint32_t expanded_neighbors,
+                                                 VertexId v) const {
+  switch (s_.order.kind) {
+    case topology::ExpansionOrderKind::index:
+      return {std::int64_t(kind), 0, 0, v};
+    case topology::ExpansionOrderKind::random:
+      return {std::int64_t(kind), 0, 0, std::int64_t(splitmix(s_.order.seed ^ splitmix(v)) >> 1)};
+    case topology::ExpansionOrderKind::priority:
+      break;
+  }
+  const std::int64_t kk = k == 0 ? 4 : k;
+  const std::int64_t n =
+      kind == Kind::simple ? -std::int64_t(expanded_neighbors) : std::int64_t(expanded_neighbors);
+  return {std::int64_t(kind), kk, n, v};
+}
+
+void ClusterExpander::evaluate(VertexId v) {
+  grow();
+  ++version_[v];
+  cached_[v].reset();
+  float_centre_[v].reset();
+  if (!e_.unexpanded[v]) return;
+  const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
+  Kind kind;
+  if (st.unexpanded_link.vertices == 0) {
+    kind = Kind::automatic;
+  } else {
+    if (!st.expandable) return;
+    const FloatCone guess = float_expansion_cone(e_, v);
+    const FloatConeVerdict g =
+        guess.base_tets == 0 || guess_wrong_[v] ? FloatConeVerdict{} : guess_cone(guess, s_.placement);
+    if (guess.base_tets == 0) {
+      kind = Kind::inflate;
+    } else if (g.guess == ConeGuess::closed && certified_closed(e_, v, guess, g.lp)) {
+      // The exact class, proved on at most four rows instead of the whole cone.
+      kind = refinement_kind(v);
+      ++stats_.closed_by_support;
+    } else if (g.guess == ConeGuess::open) {
+      // The exact cone, the certified LP and the precision reduction run when v is popped,
+      // once, instead of at every re-evaluation (about five per expansion): the same position,
+      // a fraction of the cost. Should the guess be wrong there, v is classified exactly from
+      // then on. The float centre is kept for the quick placement (placement.hpp).
+      kind = Kind::simple;
+      ++stats_.lp_float_guesses;
+      float_centre_[v] = float_centre(guess, g.lp, s_.placement);
+    } else {
+      const ExpansionCone cone = gather_expansion_cone(e_, v);
+      Placement p = place(cone, nullptr);
+      if (p.ok()) {
+        kind = Kind::simple;
+        cached_[v] = std::move(p);
+      } else {
+        // Bases that are not discs (pinched, dangling edges) come after every disc: their
+        // refinement is heavier (paper Sec. 4.1.2: star-shapification before inflation).
+        kind = refinement_kind(v);
+      }
+    }
+  }
+  queue_.push({key(kind, st.manifold_k, st.expanded_neighbors, v), version_[v], v, kind,
+               std::uint8_t(st.manifold_k)});
+}
+
+Kind ClusterExpander::refinement_kind(VertexId v) {
+  return topology::expanded_link_cut_vertices(e_.mesh, v, e_.unexpanded).empty() ? Kind::star_shapify
+                                                                                 : Kind::inflate;
+}
+
+Placement ClusterExpander::place(const ExpansionCone& cone, const VertexId* witness) {
+  Placement p = witness ? place_in_cone(cone, s_.placement, &e_.center, &e_.target[*witness])
+                        : place_in_cone(cone, s_.placement);
+  ++stats_.lps;
+  if (p.info.certified) ++stats_.lps_certified;
+  if (p.info.fell_back) ++stats_.lps_fell_back;
+  return p;
+}
+
+void ClusterExpander::handle(const Entry& entry) {
+  const VertexId v = entry.v;
+  switch (entry.kind) {
+    case Kind::automatic:
+      label_ = "automatic";
+      expand_to(v, e_.center, entry.k);
+      ++stats_.expansions_automatic;
+      return;
+    case Kind::simple: {
+      const bool guessed = !cached_[v];
+      std::optional<Placement> p = std::move(cached_[v]);
+      if (!p) {
+        if (float_centre_[v]) p = place_at_point(e_, v, *float_centre_[v]);
+        if (p)
+          ++stats_.placements_float_centre;
+        else
+          p = place(gather_expansion_cone(e_, v), nullptr);
+      }
+      if (!p->ok()) {
+        if (!guessed)
+          throw MapError(MapErrorKind::internal, "a simple cone lost its interior",
+                         "vertex " + std::to_string(v));
+        guess_wrong_[v] = 1;
+        dirty(v);
+        return;
+      }
+      label_ = "simple";
+      expand_to(v, p->position, entry.k, &*p);
+      ++stats_.expansions_simple;
+      return;
+    }
+    case Kind::star_shapify:
+    case Kind::inflate:
+      // A failure changes nothing that matters for v: it waits until its star changes.
+      if (expand_subcluster(v)) return;
+      label_ = entry.kind == Kind::inflate ? "inflation" : "star-shapified";
+      if (const std::size_t before = e_.num_vertices(); !refine_and_expand(v, 0))
+        ++failures_;
+      else if (s_.collapse_after_refinement)
+        collapse_added_since(before);
+      return;
+  }
+}
+
+void ClusterExpander::expand_to(VertexId v, const HPoint& position, int k, const Placement* placement) {
+  e_.target[v] = position;
+  e_.unexpanded[v] = 0;
+  after_expansion(v, k, placement);
+}
+
+// Bookkeeping of v having left the cluster (position and flag already set).
+void ClusterExpander::after_expansion(VertexId v, int k, const Placement* placement) {
+  const HPoint& position = e_.target[v];
+  --cluster_;
+  ++expanded_;
+  ++stats_.k_manifold[k >= 1 && k <= 3 ? k : 0];
+  max_bits_ = std::max(max_bits_, position.bit_size());
+  ++version_[v];
+  require_valid(v, "expansion", placement);
+  if (s_.check) check_all("after expanding vertex " + std::to_string(v));
+  dirty_star(v);
+  if (s_.trace) trace_row(v, position, placement);
+  if (s_.smooth_every) recent_.push_back(v);
+}
+
+void ClusterExpander::trace_row(VertexId v, const HPoint& position, const Placement* placement) const {
+  TraceRow row = state_row(e_, s_.input_vertices);
+  row.step = expanded_;
+  row.kind = label_;
+  row.vertex = v;
+  row.bits = position.bit_size();
+  row.cone_rows = placement ? placement->rows : 0;
+  row.lp = !placement                                  ? "none"
+           : placement->info.backend == "float-centre" ? "float-centre"
+           : placement->info.certified                 ? "certified"
+           : placement->info.fell_back                 ? "exact-fallback"
+                                                       : "exact";
+  row.cluster_left = cluster_;
+  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s_.start).count();
+  s_.trace(row);
+}
+
+// Invariant 2 around v after v moved or appeared. In an exact run a failure is a bug; in a
+// non-exact one (--arith) the rounding of v's position lost validity here: the run stops with
+// the loss (step, operation, vertex, tet, bits the exact position had).
+void ClusterExpander::require_valid(VertexId v, const char* action, const Placement* placement) const {
+  if (e_.arith.exact()) {
+    if (std::string why = check_local_invariant(e_, v); !why.empty())
+      throw MapError(MapErrorKind::internal, std::string(action) + " broke an invariant: " + why,
+                     "vertex " + std::to_string(v));
+    return;
+  }
+  const std::optional<InvalidTet> bad = first_invalid_tet_around(e_, v);
+  if (!bad) return;
+  std::string what = std::string(action) + " of vertex " + std::to_string(v) + " to a rounded position";
+  if (placement && placement->rounded_outside) what += " outside its cone";
+  PrecisionLoss loss = precision_loss_at(e_, v, *bad, label_, std::move(what));
+  loss.step = expanded_ - (std::string_view(action) == "expansion" ? 1 : 0);
+  loss.exact_bits = placement ? placement->unrounded_bits : 0;
+  throw PrecisionLost(std::move(loss));
+}
+
+void ClusterExpander::check_all(const std::string& when) const {
+  if (std::string why = check_invariants(e_, *s_.prescribed); !why.empty())
+    throw MapError(MapErrorKind::internal, "invariant violated " + when + ": " + why);
+}
+
+// Splits edge (c, b) from cluster vertex c to expanded vertex b at a new cluster vertex at p_c.
+// Keeps every invariant: the tets with the new vertex in place of c are copies of old ones
+// (same positions, same number of cluster vertices), the others have two cluster vertices; and
+// the cluster stays simply connected (the new vertex's unexpanded link is the cone from c).
+VertexId ClusterExpander::push(VertexId c, VertexId b) {
+  for (TetId t : topology::tets_around_edge(e_.mesh, c, b))
+    for (VertexId w : e_.mesh.tet(t))
+      if (e_.unexpanded[w]) dirty(w);
+  const VertexId m = e_.split_edge(c, b, e_.center, true);
+  ++cluster_;
+  grow();
+  dirty(m);
+  if (s_.check) check_all("after pushing edge (" + std::to_string(c) + ", " + std::to_string(b) + ")");
+  return m;
+}
+
+// Collapses a pushed vertex x (still at p_c, in the cluster) back into cluster vertex c: the mesh
+// is exactly as before the push.
+void ClusterExpander::undo_push(VertexId c, VertexId x) {
+  const topology::CollapseResult r = topology::collapse_edge(e_.mesh, c, x);
+  if (!r.ok) throw MapError(MapErrorKind::internal, "could not undo a push: " + r.message);
+  e_.unexpanded[x] = 0;
+  --cluster_;
+  ++version_[x];
+  dirty_star(c);
+}
+
+// Tried before refining v, that is only when no single vertex is simply expandable (the class
+// comes first in the key). A plan is found without changing anything; committing it sets every
+// position first, since each was chosen with the rest of the set at its common point, then
+// checks invariant 2 around each vertex.
+bool ClusterExpander::expand_subcluster(VertexId v) {
+  if (s_.subcluster_size < 2) return false;
+  SubclusterCounters counters;
+  const auto began = std::chrono::steady_clock::now();
+  std::optional<std::vector<SubclusterMove>> plan =
+      plan_subcluster(e_, v, s_.subcluster_size, s_.placement, ws_, counters);
+  stats_.seconds_subcluster_search +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  stats_.subcluster_candidates += counters.candidates;
+  stats_.lps += counters.exact_lps;
+  if (!plan) return false;
+  const Relabel relabel(label_, "subcluster");
+  for (const SubclusterMove& m : *plan) {
+    e_.target[m.v] = m.placement.position;
+    e_.unexpanded[m.v] = 0;
+  }
+  for (const SubclusterMove& m : *plan) after_expansion(m.v, m.manifold_k, &m.placement);
+  // Each was placed with the rest of the set at one point: crowded. Re-centring each in its
+  // star's kernel gives the next cones room.
+  for (const SubclusterMove& m : *plan) recentre(m.v);
+  ++stats_.subcluster_expansions;
+  stats_.expansions_subcluster += plan->size();
+  return true;
+}
+
+// The refinement that expanded a vertex is conservative: of the vertices it added, those now
+// expanded are collapsed into an expanded neighbour wherever every invariant survives, so that
+// the next cones do not inherit them.
+void ClusterExpander::collapse_added_since(std::size_t first) {
+  grow();
+  for (std::size_t g = e_.num_vertices(); g-- > first;) {
+    if (e_.mesh.tets_of(VertexId(g)).empty()) continue;
+    const std::optional<VertexId> keep = try_collapse(e_, VertexId(g));
+    if (!keep) continue;
+    ++stats_.refinement_collapses;
+    ++version_[g];
+    dirty_star(*keep);
+    if (s_.check) check_all("after collapsing vertex " + std::to_string(g));
+  }
+}
+
+// Every `smooth_every` expansions, the expanded non-boundary neighbours of the vertices expanded
+// since the last time, if they still touch the cluster, move to their laplacian_position
+// (smoothing.hpp), which keeps every tet's state.
+void ClusterExpander::smooth_recent() {
+  std::vector<VertexId> movers;
+  for (VertexId v : recent_)
+    for (TetId t : e_.mesh.tets_of(v))
+      for (VertexId b : e_.mesh.tet(t))
+        if (!e_.unexpanded[b] && !e_.boundary[b] && touches_cluster(b)) movers.push_back(b);
+  recent_.clear();
+  std::sort(movers.begin(), movers.end());
+  movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
+  for (VertexId b : movers) smooth_vertex(b);
+  if (s_.check) check_all("after smoothing");
+}
+
+bool ClusterExpander::touches_cluster(VertexId b) const {
+  for (TetId t : e_.mesh.tets_of(b))
+    for (VertexId w : e_.mesh.tet(t))
+      if (e_.unexpanded[w]) return true;
+  return false;
+}
+
+void ClusterExpander::smooth_vertex(VertexId b) {
+  const std::optional<HPoint> q = laplacian_position(e_, b);
+  if (!q) return;
+  e_.target[b] = *q;
+  ++stats_.smoothing_moves;
+  max_bits_ = std::max(max_bits_, q->bit_size());
+  dirty_star(b);
+}
+
+}  // namespace detail
+
+ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats) {
+  return detail::ClusterExpander(e, settings, stats).run();
+}
+
+}  // namespace cmx::algorithm

@@ -1,0 +1,441 @@
+#include "generators/boundary_shapes.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <concepts>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <queue>
+#include <random>
+#include <string_view>
+#include <utility>
+
+#include "kernel/orient.hpp"
+#include "topology/complex_queries.hpp"
+
+namespace cmx::generators {
+namespace {
+
+using topology::invalid_index;
+using Vec3 = std::array<double, 3>;
+
+constexpr std::uint64_t default_seed = BoundaryShapeSpec{}.seed;
+
+constexpr std::array<std::pair<BoundaryShape, std::string_view>, 4> shape_names{{
+    {BoundaryShape::tet, "tet"},
+    {BoundaryShape::stiff_tet, "stiff-tet"},
+    {BoundaryShape::sphere, "sphere"},
+    {BoundaryShape::star, "star"},
+}};
+
+// ---- small vector helpers -------------------------------------------------------------------
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+bool finite(const Vec3& a) { return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]); }
+
+// Message text from pieces (strings and integers); avoids "literal" + std::string, on which g++ 12
+// emits a false -Wrestrict warning.
+void append_part(std::string& out, std::string_view part) { out += part; }
+template <std::integral T>
+void append_part(std::string& out, T number) {
+  out += std::to_string(number);
+}
+template <class... Parts>
+std::string text(const Parts&... parts) {
+  std::string out;
+  (append_part(out, parts), ...);
+  return out;
+}
+
+std::string face_text(const topology::Triangle& f) { return text("(", f[0], ", ", f[1], ", ", f[2], ")"); }
+
+// ---- seeded choices, identical on every platform -------------------------------------------
+
+// SplitMix64's finaliser: spreads a seed and a counter over all 64 bits.
+std::uint64_t mix(std::uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// Uniform on [0, n), n >= 1, by rejection (std::uniform_int_distribution is not specified
+// bit for bit, this is): accept r >= 2^64 mod n, so that r mod n is unbiased.
+std::uint64_t draw_below(std::mt19937_64& rng, std::uint64_t n) {
+  const std::uint64_t reject_below = (0 - n) % n;
+  for (;;) {
+    const std::uint64_t r = rng();
+    if (r >= reject_below) return r % n;
+  }
+}
+
+// ---- the boundary surface, in local numbering ----------------------------------------------
+
+struct Surface {
+  std::vector<std::uint32_t> vertices;                  // global ids, ascending
+  std::vector<std::uint32_t> local;                     // global id -> local id, or invalid_index
+  std::vector<topology::Triangle> faces;                // local ids, outward
+  std::vector<std::vector<std::uint32_t>> neighbors;    // local adjacency over boundary edges, ascending
+};
+
+// Builds the surface; returns "" or why the boundary is not a closed, consistently oriented surface.
+std::string build_surface(const topology::TetMesh& mesh, Surface& s) {
+  const auto faces = topology::boundary_faces(mesh);
+  s.local.assign(mesh.num_vertices(), invalid_index);
+  for (const auto& f : faces)
+    for (auto v : f.face) s.local[v] = 0;
+  for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
+    if (s.local[v] == 0) {
+      s.local[v] = static_cast<std::uint32_t>(s.vertices.size());
+      s.vertices.push_back(v);
+    }
+  // Each undirected edge must be in exactly two faces, once in each direction.
+  std::vector<std::array<std::uint32_t, 3>> directed;  // (min, max, 1 when listed min -> max)
+  for (const auto& f : faces) {
+    topology::Triangle t{s.local[f.face[0]], s.local[f.face[1]], s.local[f.face[2]]};
+    s.faces.push_back(t);
+    for (int i = 0; i < 3; ++i) {
+      const auto a = t[std::size_t(i)], b = t[std::size_t((i + 1) % 3)];
+      directed.push_back({std::min(a, b), std::max(a, b), a < b ? 1u : 0u});
+    }
+  }
+  std::sort(directed.begin(), directed.end());
+  s.neighbors.assign(s.vertices.size(), {});
+  for (std::size_t i = 0; i < directed.size();) {
+    std::size_t j = i;
+    while (j < directed.size() && directed[j][0] == directed[i][0] && directed[j][1] == directed[i][1]) ++j;
+    const auto a = directed[i][0], b = directed[i][1];
+    if (j - i != 2 || directed[i][2] == directed[i + 1][2])
+      return text("boundary edge (", s.vertices[a], ", ", s.vertices[b], ") is in ", j - i, " boundary faces",
+                  j - i == 2 ? " listed in the same direction" : "", ": the boundary is not a closed oriented surface");
+    s.neighbors[a].push_back(b);
+    s.neighbors[b].push_back(a);
+    i = j;
+  }
+  for (auto& n : s.neighbors) std::sort(n.begin(), n.end());
+  return "";
+}
+
+// Shortest path from `from` to `to` over boundary edges, avoiding fixed vertices other than `to`
+// (Dijkstra; ties broken by vertex id, so the result is deterministic). Empty when none exists.
+std::vector<std::uint32_t> shortest_path(const Surface& s, const std::vector<Vec3>& src, const std::vector<char>& fixed,
+                                         std::uint32_t from, std::uint32_t to) {
+  const auto& adj = s.neighbors[from];
+  if (std::binary_search(adj.begin(), adj.end(), to)) return {from, to};
+  const std::size_t n = s.vertices.size();
+  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+  std::vector<std::uint32_t> prev(n, invalid_index);
+  using Item = std::pair<double, std::uint32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  dist[from] = 0;
+  queue.push({0.0, from});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > dist[v]) continue;
+    if (v == to) break;
+    for (auto u : s.neighbors[v]) {
+      if (fixed[u] && u != to) continue;
+      const double du = d + norm(sub(src[u], src[v]));
+      if (du < dist[u]) {
+        dist[u] = du;
+        prev[u] = v;
+        queue.push({du, u});
+      }
+    }
+  }
+  if (prev[to] == invalid_index) return {};
+  std::vector<std::uint32_t> path{to};
+  while (path.back() != from) path.push_back(prev[path.back()]);
+  std::reverse(path.begin(), path.end());
+  return path;
+}
+
+// ---- Tutte embedding of the free vertices ----------------------------------------------------
+
+// Solves the uniform-weight Laplacian system of one connected group of free vertices,
+//   deg(v) x_v - sum_{free u ~ v} x_u = sum_{fixed u ~ v} p_u,
+// for the three coordinates, by conjugate gradients with the Jacobi preconditioner. The matrix is
+// symmetric positive definite because the group touches a fixed vertex.
+void solve_tutte_group(const Surface& s, const std::vector<std::uint32_t>& group, const std::vector<std::uint32_t>& slot,
+                       const std::vector<char>& fixed, std::vector<Vec3>& pos) {
+  const std::size_t n = group.size();
+  std::vector<double> diag(n), b(n), x(n), r(n), z(n), p(n), ap(n);
+  const auto apply = [&](const std::vector<double>& in, std::vector<double>& out) {
+    for (std::size_t i = 0; i < n; ++i) {
+      double sum = diag[i] * in[i];
+      for (auto u : s.neighbors[group[i]])
+        if (!fixed[u]) sum -= in[slot[u]];
+      out[i] = sum;
+    }
+  };
+  const auto inner = [&](const std::vector<double>& a, const std::vector<double>& c) {
+    double sum = 0;
+    for (std::size_t i = 0; i < n; ++i) sum += a[i] * c[i];
+    return sum;
+  };
+  for (std::size_t i = 0; i < n; ++i) diag[i] = double(s.neighbors[group[i]].size());
+  const std::size_t max_iterations = 10 * n + 100;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (std::size_t i = 0; i < n; ++i) {
+      double sum = 0;
+      for (auto u : s.neighbors[group[i]])
+        if (fixed[u]) sum += pos[u][std::size_t(axis)];
+      b[i] = sum;
+      x[i] = sum / diag[i];  // start: the fixed neighbours' contribution alone
+    }
+    apply(x, ap);
+    for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - ap[i];
+    const double tolerance = 1e-15 * std::max(std::sqrt(inner(b, b)), 1e-300);
+    for (std::size_t i = 0; i < n; ++i) p[i] = z[i] = r[i] / diag[i];
+    double rz = inner(r, z);
+    for (std::size_t it = 0; it < max_iterations && std::sqrt(inner(r, r)) > tolerance; ++it) {
+      apply(p, ap);
+      const double pap = inner(p, ap);
+      if (!(pap > 0)) break;
+      const double alpha = rz / pap;
+      for (std::size_t i = 0; i < n; ++i) {
+        x[i] += alpha * p[i];
+        r[i] -= alpha * ap[i];
+        z[i] = r[i] / diag[i];
+      }
+      const double rz_next = inner(r, z);
+      const double beta = rz_next / rz;
+      rz = rz_next;
+      for (std::size_t i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
+    }
+    for (std::size_t i = 0; i < n; ++i) pos[group[i]][std::size_t(axis)] = x[i];
+  }
+}
+
+// Places every free vertex by a Tutte embedding; false when a group of free vertices touches no
+// fixed vertex (cannot happen on a connected surface with a fixed vertex).
+bool place_free_vertices(const Surface& s, const std::vector<char>& fixed, std::vector<Vec3>& pos) {
+  const std::size_t n = s.vertices.size();
+  std::vector<std::uint32_t> slot(n, invalid_index);
+  std::vector<std::uint32_t> group;
+  for (std::uint32_t start = 0; start < n; ++start) {
+    if (fixed[start] || slot[start] != invalid_index) continue;
+    // Breadth-first over free-free edges: one group, numbered in discovery order.
+    group.assign(1, start);
+    slot[start] = 0;
+    bool touches_fixed = false;
+    for (std::size_t head = 0; head < group.size(); ++head)
+      for (auto u : s.neighbors[group[head]]) {
+        if (fixed[u]) touches_fixed = true;
+        else if (slot[u] == invalid_index) {
+          slot[u] = static_cast<std::uint32_t>(group.size());
+          group.push_back(u);
+        }
+      }
+    if (!touches_fixed) return false;
+    solve_tutte_group(s, group, slot, fixed, pos);
+  }
+  return true;
+}
+
+// ---- one attempt -----------------------------------------------------------------------------
+
+const std::array<Vec3, 4>& tet_corners() {
+  static const std::array<Vec3, 4> corners{{
+      {std::sqrt(8.0) / 3, 0.0, -1.0 / 3},
+      {-std::sqrt(2.0) / 3, std::sqrt(2.0 / 3), -1.0 / 3},
+      {-std::sqrt(2.0) / 3, -std::sqrt(2.0 / 3), -1.0 / 3},
+      {0.0, 0.0, 1.0},
+  }};
+  return corners;
+}
+
+// Four distinct corners (local ids) for attempt `rng`.
+std::array<std::uint32_t, 4> choose_corners(const Surface& s, BoundaryShape shape, std::mt19937_64& rng) {
+  std::array<std::uint32_t, 4> c{};
+  int chosen = 0;
+  if (shape == BoundaryShape::stiff_tet) {
+    const auto& f = s.faces[draw_below(rng, s.faces.size())];
+    c = {f[0], f[1], f[2], 0};
+    chosen = 3;
+  }
+  while (chosen < 4) {
+    const auto v = static_cast<std::uint32_t>(draw_below(rng, s.vertices.size()));
+    if (std::find(c.begin(), c.begin() + chosen, v) == c.begin() + chosen) c[std::size_t(chosen++)] = v;
+  }
+  return c;
+}
+
+// Maps the surface onto the tetrahedron with the given corners; "" or why it failed.
+std::string embed_on_tet(const Surface& s, const std::vector<Vec3>& src, const std::array<std::uint32_t, 4>& corners,
+                         std::vector<Vec3>& pos) {
+  const auto& tet = tet_corners();
+  const std::size_t n = s.vertices.size();
+  std::vector<char> fixed(n, 0);
+  pos.assign(n, Vec3{0, 0, 0});
+  for (std::size_t j = 0; j < 4; ++j) {
+    fixed[corners[j]] = 1;
+    pos[corners[j]] = tet[j];
+  }
+  for (std::size_t j = 1; j < 4; ++j)
+    for (std::size_t i = 0; i < j; ++i) {
+      const auto path = shortest_path(s, src, fixed, corners[j], corners[i]);
+      if (path.empty())
+        return text("no free boundary path between corners ", s.vertices[corners[j]], " and ", s.vertices[corners[i]]);
+      const std::size_t m = path.size() - 2;  // inner vertices
+      for (std::size_t k = 1; k <= m; ++k) {
+        const double t = double(k) / double(m + 1);
+        fixed[path[k]] = 1;
+        for (std::size_t a = 0; a < 3; ++a) pos[path[k]][a] = (1 - t) * tet[j][a] + t * tet[i][a];
+      }
+    }
+  if (!place_free_vertices(s, fixed, pos)) return "a group of free boundary vertices touches no path";
+  // Inside-out (the corners' cyclic order is the mirror image)? Reflect y -> -y: exact, and it
+  // maps the tetrahedron onto itself.
+  double volume = 0;
+  for (const auto& f : s.faces) volume += dot(pos[f[0]], cross(pos[f[1]], pos[f[2]]));
+  if (volume < 0)
+    for (auto& p : pos) p[1] = -p[1];
+  return "";
+}
+
+void apply_shape(const BoundaryShapeSpec& spec, std::vector<Vec3>& pos) {
+  if (spec.shape == BoundaryShape::tet || spec.shape == BoundaryShape::stiff_tet) return;
+  for (auto& p : pos) p = scaled(p, 1.0 / norm(p));
+  if (spec.shape != BoundaryShape::star) return;
+  std::mt19937_64 rng(mix(spec.seed ^ 0x5354415253484150ull));  // "STARSHAP": a stream apart from the corners'
+  for (auto& p : pos) {
+    const double factor = 1.0 + 9.0 * double(draw_below(rng, std::uint64_t{1} << 20)) * 0x1p-20;
+    p = scaled(p, factor);
+  }
+}
+
+GeneratedBoundary failure(std::string message, int attempts = 0) {
+  GeneratedBoundary g;
+  g.message = std::move(message);
+  g.attempts = attempts;
+  return g;
+}
+
+}  // namespace
+
+const char* shape_name(BoundaryShape shape) {
+  for (const auto& [s, name] : shape_names)
+    if (s == shape) return name.data();
+  return "?";
+}
+
+std::optional<BoundaryShapeSpec> parse_boundary_shape(std::string_view text) {
+  const auto colon = text.find(':');
+  const std::string_view name = text.substr(0, colon);
+  BoundaryShapeSpec spec;
+  bool known = false;
+  for (const auto& [s, n] : shape_names)
+    if (n == name) spec.shape = s, known = true;
+  if (!known) return std::nullopt;
+  if (colon == std::string_view::npos) return spec;
+  const std::string_view digits = text.substr(colon + 1);
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), spec.seed);
+  if (ec != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+  return spec;
+}
+
+std::string to_string(const BoundaryShapeSpec& spec) {
+  std::string name = shape_name(spec.shape);
+  if (spec.shape == BoundaryShape::star || spec.seed != default_seed) name += text(":", spec.seed);
+  return name;
+}
+
+GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::vector<Vec3>& source,
+                                    const BoundaryShapeSpec& spec) {
+  if (source.size() != mesh.num_vertices())
+    return failure(text("the mesh has ", mesh.num_vertices(), " vertices but ", source.size(), " source positions were given"));
+  for (std::size_t v = 0; v < source.size(); ++v)
+    if (!finite(source[v])) return failure(text("source position of vertex ", v, " is not finite"));
+  Surface s;
+  if (auto why = build_surface(mesh, s); !why.empty()) return failure(why);
+  if (s.vertices.size() < 4)
+    return failure(text("the boundary has ", s.vertices.size(), " vertices; at least 4 are needed"));
+  std::vector<Vec3> src(s.vertices.size());
+  for (std::size_t i = 0; i < src.size(); ++i) src[i] = source[s.vertices[i]];
+
+  GeneratedBoundary g;
+  g.vertices = s.vertices;
+  std::string first_failure, last_failure;
+  for (int attempt = 0; attempt < max_boundary_attempts; ++attempt) {
+    std::mt19937_64 rng(mix(spec.seed + 0x9E3779B97F4A7C15ull * std::uint64_t(attempt + 1)));
+    const auto corners = choose_corners(s, spec.shape, rng);
+    std::string why = embed_on_tet(s, src, corners, g.positions);
+    if (why.empty()) {
+      apply_shape(spec, g.positions);
+      why = check_star_shaped_about_origin(mesh, g);
+    }
+    g.attempts = attempt + 1;
+    if (why.empty()) {
+      g.ok = true;
+      return g;
+    }
+    if (first_failure.empty()) first_failure = why;
+    last_failure = std::move(why);
+  }
+  return failure(text("no valid ", shape_name(spec.shape), " boundary in ", max_boundary_attempts,
+                      " attempts (first failure: ", first_failure, "; last failure: ", last_failure, ")"),
+                 max_boundary_attempts);
+}
+
+std::string check_star_shaped_about_origin(const topology::TetMesh& mesh, const GeneratedBoundary& boundary) {
+  if (boundary.positions.size() != boundary.vertices.size())
+    return text(boundary.vertices.size(), " vertices but ", boundary.positions.size(), " positions");
+  std::vector<std::uint32_t> slot(mesh.num_vertices(), invalid_index);
+  for (std::size_t i = 0; i < boundary.vertices.size(); ++i) {
+    const auto v = boundary.vertices[i];
+    if (v >= mesh.num_vertices()) return text("vertex ", v, " is not a vertex of the mesh");
+    if (slot[v] != invalid_index) return text("vertex ", v, " is listed twice");
+    if (!finite(boundary.positions[i])) return text("the position of vertex ", v, " is not finite");
+    slot[v] = static_cast<std::uint32_t>(i);
+  }
+  const auto faces = topology::boundary_faces(mesh);
+  std::vector<char> on_boundary(mesh.num_vertices(), 0);
+  for (const auto& f : faces)
+    for (auto v : f.face) {
+      if (slot[v] == invalid_index) return text("boundary vertex ", v, " has no position");
+      on_boundary[v] = 1;
+    }
+  for (auto v : boundary.vertices)
+    if (!on_boundary[v]) return text("vertex ", v, " is not a boundary vertex");
+  const double origin[3] = {0, 0, 0};
+  for (const auto& f : faces) {
+    const auto& a = boundary.positions[slot[f.face[0]]];
+    const auto& b = boundary.positions[slot[f.face[1]]];
+    const auto& c = boundary.positions[slot[f.face[2]]];
+    const Sign s = orient3d(a.data(), b.data(), c.data(), origin);
+    if (s == Sign::zero)
+      return text("boundary face ", face_text(f.face), " is degenerate or its plane contains the origin");
+    if (s == Sign::positive) return text("boundary face ", face_text(f.face), " does not see the origin on its inner side");
+  }
+  // Winding around each vertex's ray: the angles at v of the centrally projected faces, each in
+  // (0, pi) now that every face is positively oriented, sum to 2*pi*k; star-shaped means k = 1.
+  std::vector<double> angle(mesh.num_vertices(), 0.0);
+  for (const auto& f : faces)
+    for (int i = 0; i < 3; ++i) {
+      const auto v = f.face[std::size_t(i)];
+      const Vec3& p = boundary.positions[slot[v]];
+      const Vec3 axis = scaled(p, 1.0 / norm(p));
+      const Vec3& u = boundary.positions[slot[f.face[std::size_t((i + 1) % 3)]]];
+      const Vec3& w = boundary.positions[slot[f.face[std::size_t((i + 2) % 3)]]];
+      const Vec3 tu = sub(u, scaled(axis, dot(u, axis))), tw = sub(w, scaled(axis, dot(w, axis)));
+      angle[v] += std::atan2(dot(cross(tu, tw), axis), dot(tu, tw));
+    }
+  for (auto v : boundary.vertices) {
+    const double turns = std::round(angle[v] / (2 * std::numbers::pi));
+    if (turns != 1)
+      return text("the boundary faces around vertex ", v, " wind ", long(turns), " times around its ray from the origin");
+  }
+  return "";
+}
+
+}  // namespace cmx::generators
