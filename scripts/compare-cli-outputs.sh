@@ -49,7 +49,7 @@ for m in grid:8,8,8 ball:6 slab:20,16,1; do
   for s in tet stiff-tet sphere star:7; do
     b=$(echo "$s" | tr ':' '_')
     "$bin" boundary "$out/gen/$g.vtk" --shape "$s" -o "$out/gen/${g}_$b.txt" > /dev/null 2>&1
-    run "gen_${g}_$b" "$out/gen/$g.vtk" --boundary "$out/gen/${g}_$b.txt"
+    run "gen_${g}_$b" "gen/$g.vtk" --boundary "gen/${g}_$b.txt"  # relative: the report names it
   done
 done
 true
