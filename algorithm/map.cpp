@@ -17,6 +17,7 @@
 #include "algorithm/refinement/shelling_fallback.hpp"
 #include "algorithm/problem/validate_problem.hpp"
 #include "algorithm/verify/verify_map.hpp"
+#include "algorithm/tuning.hpp"
 #include "arith/rational.hpp"
 #include "arith/rounding.hpp"
 #include "topology/complex_queries.hpp"
@@ -120,7 +121,7 @@ ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_poin
   settings.subcluster_size = options.subclusters;
   settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior
   settings.input_vertices = input_vertices;
-  settings.vertex_budget = std::max<std::size_t>(200000, 50 * input_vertices);
+  settings.vertex_budget = std::max(tuning::vertex_budget_floor, tuning::vertex_budget_per_input_vertex * input_vertices);
   return settings;
 }
 
@@ -266,8 +267,8 @@ const char* to_string(InitialMapKind kind) {
 }
 
 // automatic: the local repair succeeded but its stitched doubles are not a valid map, where the
-// global method's often are (measured on 3 of the 104 generated cases: 2 inverted tets each,
-// stars holding 34 to 50 % of the tets; the global method's doubles valid, its runs shorter).
+// global method's often are: stars that hold a large share of the tets crowd their vertices like a
+// global run does, without its crowd-opening passes (cases: bench/RESULTS.md, issue 20 sections).
 bool retry_globally(const MapOptions& options, const RunControl& control, const MapResult& local) {
   return options.init == InitialMapKind::automatic && local.outcome == MapOutcome::success &&
          local.doubles.checked && !local.doubles.check.valid() && !local.doubles.stopped_at_deadline &&
@@ -275,10 +276,9 @@ bool retry_globally(const MapOptions& options, const RunControl& control, const 
 }
 
 // automatic: a finished map whose doubles are not valid. Its own doubles are then an initial map
-// of its refined mesh whose defects the local repair encloses in stars (measured on VOLMAP's
-// gargoyle_star: 409 tets of the global method's doubles inverted or flat, in a crowd of 120
-// vertices within 1e-8 of p_c; re-mapped from its doubles, one star, doubles valid). Only with
-// time left: the repair is as slow as a global run on the star.
+// of its refined mesh whose defects (a crowd near p_c) the local repair encloses in one star,
+// mapped afresh with well-spread neighbours (bench/RESULTS.md, "gargoyle_star's doubles"). Only
+// with time left: the repair is as slow as a global run on the star.
 bool remap_from_doubles(const MapOptions& options, const RunControl& control, const MapResult& r) {
   return options.init == InitialMapKind::automatic && options.placement.arith.exact() &&
          r.outcome == MapOutcome::success && r.doubles.checked && !r.doubles.check.valid() &&
@@ -300,8 +300,8 @@ MapProblem problem_from_doubles(const MapResult& r) {
       p.boundary_positions.push_back(exact(r.target[v]));
     }
   // The nearest doubles, not the repaired ones: the repair spreads its moves over the crowd's
-  // neighbours, and the stars around them grew to 97 % of gargoyle_star's tets (55 % from the
-  // nearest doubles).
+  // neighbours, and the stars grown around them hold far more of the mesh than around the nearest
+  // doubles (bench/RESULTS.md, "gargoyle_star's doubles").
   const auto nearest = [](const Rational& q) { return rational_from_double(to_double(q)); };
   for (const HPoint& q : r.target)
     p.initial_target.push_back({nearest(q.coordinate(0)), nearest(q.coordinate(1)), nearest(q.coordinate(2))});

@@ -19,7 +19,7 @@
 //
 // Why: on inputs without interior vertices (one-layer slabs) the added vertices left after the
 // other three ways are blocked by rewritten tets made of input vertices only, which no vertex move
-// can fix; only a different cut of the star can (measured in bench/RESULTS.md, stop 16).
+// can fix; only a different cut of the star can (figures: bench/RESULTS.md, "dataset").
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -31,8 +31,8 @@ namespace cmx::algorithm {
 
 inline constexpr std::size_t flip_collapse_max_flips = 30;
 // A vertex whose best neighbour would get more non-positive rewritten tets than this is not
-// searched: such searches rarely succeed and took half the pass's time (measured on two one-layer
-// slabs: same growth within 0.001, pass 1.8 s -> 0.9 s and 1.9 s -> 1.2 s).
+// searched: such searches rarely succeed and cost about half the pass's time, for a growth
+// that stays the same within 0.001 on one-layer slabs.
 inline constexpr std::size_t flip_collapse_max_failures = 8;
 
 struct FlipCollapse {

@@ -10,8 +10,7 @@
 //
 // Why: on inputs without interior vertices (one-layer slabs) the vertices left after the plain
 // collapses and the merges are mostly blocked by one to three rewritten tets, each holding another
-// added vertex (measured on slab_50_40_1_s1_star: 603 left, 275 of them with at most three such
-// tets toward their best neighbour, none blocked by a tet of boundary vertices only).
+// added vertex, rarely by a tet of boundary vertices only; moving that vertex unblocks them.
 #include <cstddef>
 #include <optional>
 #include <vector>

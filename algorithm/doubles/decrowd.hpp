@@ -3,10 +3,10 @@
 //
 // The last expansions leave crowds of interior vertices around p_c, too close together for
 // doubles to separate (next to p_c doubles resolve ulp(p_c), about 1e-17 for a p_c near 0.1):
-//   - nested crowds: on the polycube bird 20 vertices within 1e-283 of p_c inside 57 within
-//     1e-238 inside 75 within 1e-194, and so on;
-//   - funnels: on a two-layer slab, 1,488 vertices within 1e-6 of p_c, spread continuously from
-//     1e-42 up.
+//   - nested crowds: tens of vertices within 1e-283 of p_c inside more within 1e-238, inside
+//     more within 1e-194, and so on;
+//   - funnels (thin inputs): a thousand or more vertices within 1e-6 of p_c, spread continuously
+//     from 1e-42 up.
 // The Gauss-Seidel repair (double_output.hpp) moves the vertices of offending tets and their
 // neighbours in graph order and opens neither. Two steps here do, each keeping the exact map
 // valid:

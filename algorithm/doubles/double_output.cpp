@@ -8,6 +8,7 @@
 #include "algorithm/doubles/decrowd.hpp"
 #include "algorithm/expansion/expansion_cone.hpp"
 #include "algorithm/run_control.hpp"
+#include "algorithm/tuning.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
 
@@ -144,8 +145,7 @@ std::vector<VertexId> outside_in(const Embedding& e, const std::vector<VertexId>
 
 // Exact Gauss-Seidel moves of the interior vertices of offending tets and of their interior
 // neighbours (the exact map stays valid). Vertices that the exact map crowds closer together than
-// doubles can separate (measured: eleven vertices within 1e-16 of p_c on a random-star case) move
-// apart a little with every round.
+// doubles can separate (near p_c) move apart a little with every round.
 std::size_t local_exact_round(Embedding& e, const std::vector<VertexId>& offenders,
                               const PlacementOptions& options, std::size_t& lps) {
   std::vector<VertexId> movers;
@@ -254,7 +254,7 @@ std::vector<std::pair<VertexId, std::array<double, 3>>> reround_boundary(const E
 // The sweeps of one pass (below): until the doubles are valid, 300 sweeps, or 10 sweeps in which
 // neither the bad tets fell nor the innermost vertex moved out by a factor 2 (a deep funnel
 // opens for many sweeps before its bad tets fall); the crowd keeps the positions of the best
-// sweep (a sweep can make the doubles worse, measured on the polycube bird).
+// sweep (a sweep can make the doubles worse).
 template <class Rescan>
 void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vector<VertexId>& crowd,
                        const PlacementOptions& options, RunControl* control, Rescan rescan) {
@@ -290,8 +290,8 @@ void sweep_until_stale(Embedding& e, Scan& now, DoubleMap& out, const std::vecto
 
 // The crowds around p_c (decrowd.hpp): passes of homotheties then sweeps from the outermost
 // vertex inward, until the doubles are valid, 8 passes, or a pass without fewer bad tets. A
-// pass's sweeps open gaps that the next pass's homotheties use (slab_50_40_1_s2_sphere: 666,
-// 209, 11 and 0 bad tets after each of four passes).
+// pass's sweeps open gaps that the next pass's homotheties use, so the bad tets fall over several
+// passes where one pass alone stalls.
 template <class Rounded>
 void open_crowds(Embedding& e, Scan& now, DoubleMap& out, const PlacementOptions& options,
                  RunControl* control, Rounded rounded) {
@@ -317,7 +317,7 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
   DoubleMap out;
   if (policy == SnapPolicy::repair) {
     // The pass exists to make the doubles valid: when the plain rounding already is, it is the
-    // answer (measured: the pass was 28 % of a thick case's run, whose doubles were valid anyway).
+    // answer (the pass costs a large share of a run, spent for nothing when the doubles are valid).
     out.target = nearest_doubles(e);
     out.checked = true;
     out.check = scan(e, out.target).check;
@@ -349,10 +349,9 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
   out.check = now.check;
   if (now.check.valid()) return out;
 
-  // First in the exact map, where every move is safe (measured on tgs_100349: a crowd of vertices
-  // within 1e-19 of each other does not open in 32 rounds); then among the doubles themselves.
+  // First in the exact map, where every move is safe; then among the doubles (algorithm/tuning.hpp).
   repair_rounds(
-      now, out.exact_rounds, 32, control,
+      now, out.exact_rounds, tuning::exact_repair_rounds, control,
       [&](const std::vector<VertexId>& offenders) {
         const std::size_t moved = local_exact_round(e, offenders, options, out.lps);
         out.chebyshev_moves += moved;
@@ -373,7 +372,7 @@ DoubleMap snap_doubles(Embedding& e, SnapPolicy policy, const PlacementOptions& 
   d.target.reserve(e.num_vertices());
   for (const auto& q : out.target) d.target.push_back(HPoint::from_doubles(q[0], q[1], q[2]));
   repair_rounds(
-      now, out.rounds, 16, control,
+      now, out.rounds, tuning::double_repair_rounds, control,
       [&](const std::vector<VertexId>& offenders) {
         const std::size_t moved = repair_round(d, offenders, out.target, options, out.lps);
         out.repaired += moved;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "algorithm/tuning.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
 #include "lp/few_bit_point.hpp"
@@ -76,8 +77,8 @@ std::optional<lp::Point3> centred_dyadic(const std::vector<lp::HalfSpace>& h, co
     return q;
   };
   // At least a double's 53 bits: coarser roundings snap nearby vertices onto common planes and
-  // lines, and the exact coplanarities they create flatten later cones (measured: on a 35k-tet
-  // sphere case, starting at k = 1 needed 4x the star-shapifications and 15x the bits).
+  // lines, and the exact coplanarities they create flatten later cones (starting at k = 1 costs
+  // several times the star-shapifications and an order of magnitude more bits).
   const unsigned first = 53;
   unsigned fail = first - 1, ok = 0;
   for (unsigned k = first; k <= 65536; k *= 2) {
@@ -118,9 +119,9 @@ FloatConeVerdict guess_cone(const FloatCone& cone, const PlacementOptions& optio
   if (options.lp.backend != "certified") return out;
   out.lp = lp::float_chebyshev(cone.rows);
   if (!out.lp.optimal) return out;
-  if (out.lp.radius > 1e-6 * out.lp.scale)
+  if (out.lp.radius > tuning::cone_open_radius * out.lp.scale)
     out.guess = ConeGuess::open;
-  else if (out.lp.radius <= 1e-11 * out.lp.scale)
+  else if (out.lp.radius <= tuning::cone_closed_radius * out.lp.scale)
     out.guess = ConeGuess::closed;
   return out;
 }
@@ -137,7 +138,7 @@ std::optional<std::array<double, 3>> float_centre(const FloatCone& cone, const l
   if (options.lp.backend != "certified" || !options.arith.exact()) return std::nullopt;
   if (options.precision != PrecisionPolicy::dyadic && options.precision != PrecisionPolicy::segment)
     return std::nullopt;
-  if (!g.optimal || !(g.radius > 1e-6 * g.scale)) return std::nullopt;
+  if (!g.optimal || !(g.radius > tuning::cone_open_radius * g.scale)) return std::nullopt;
   for (double x : g.centre)
     if (!std::isfinite(x)) return std::nullopt;
   for (const auto& row : cone.rows) {
@@ -220,11 +221,14 @@ Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& optio
   return out;
 }
 
-bool recentre(Embedding& e, VertexId v, const PlacementOptions& options) {
-  const Placement p = place_in_cone(gather_expansion_cone(e, v), options);
-  if (!p.ok() || p.position == e.target[v]) return false;
+bool move_to_placement(Embedding& e, VertexId v, const Placement& p) {
+  if (!p.ok() || p.rounded_outside || p.position == e.target[v]) return false;
   e.target[v] = p.position;
   return true;
+}
+
+bool recentre(Embedding& e, VertexId v, const PlacementOptions& options) {
+  return move_to_placement(e, v, place_in_cone(gather_expansion_cone(e, v), options));
 }
 
 }  // namespace cmx::algorithm

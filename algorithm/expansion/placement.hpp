@@ -45,8 +45,8 @@ struct Placement {
 
 // What the float simplex alone says about the cone's kernel, for ordering (no certificate,
 // cheap); with the certified backend only (else `unsure`):
-//   open   : radius above 1e-6 of the rows' scale: almost surely simply expandable;
-//   closed : radius at most 1e-11 of the scale: most likely no interior (certified_closed decides);
+//   open   : radius above tuning::cone_open_radius of the rows' scale: almost surely simply expandable;
+//   closed : at most tuning::cone_closed_radius of it: most likely no interior (certified_closed decides);
 //   unsure : anything else, and float failures.
 enum class ConeGuess : std::uint8_t { open, closed, unsure };
 struct FloatConeVerdict {
@@ -59,8 +59,8 @@ FloatConeVerdict guess_cone(const FloatCone& cone, const PlacementOptions& optio
 // optimum's basis (at most four) alone already have no common point (proves_no_common_point, a
 // Motzkin certificate, kernel/plane.hpp), and the cone has more constraints. False means "not
 // proved" (the full cone must be solved).
-// Measured on a thick case: 98 % of the cones that are not simple are closed, and each is
-// re-evaluated about five times while it waits.
+// Why a proof from the float basis pays: on thick inputs nearly every cone that is not simple is
+// closed, and each is re-evaluated several times while it waits in the queue.
 bool certified_closed(const Embedding& e, VertexId v, const FloatCone& cone, const lp::FloatChebyshev& guess);
 
 // The quick placement of a cone guessed open, for the dyadic and segment policies
@@ -82,10 +82,14 @@ std::optional<Placement> place_at_point(const Embedding& e, VertexId v, const st
 Placement place_in_cone(const ExpansionCone& cone, const PlacementOptions& options,
                         const HPoint* segment_from = nullptr, const HPoint* segment_to = nullptr);
 
+// Moves vertex v to placement p, computed for v's own star, when p is usable: inside the kernel
+// (p.ok()), not pushed outside it by a non-exact arith's rounding, and not where v already is.
+// True when it moved. Every tet around v stays positive. The one rule for every re-centring.
+bool move_to_placement(Embedding& e, VertexId v, const Placement& p);
+
 // Moves expanded vertex v to the precision-reduced Chebyshev centre of its star's kernel; true
 // when it moved. Its current position is inside the kernel, so the LP has interior; a failure (a
-// degenerate face, which a valid map cannot have) leaves the vertex where it is. Every tet around
-// v stays positive.
+// degenerate face, which a valid map cannot have) leaves the vertex where it is.
 bool recentre(Embedding& e, VertexId v, const PlacementOptions& options);
 
 }  // namespace cmx::algorithm

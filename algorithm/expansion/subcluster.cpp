@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "algorithm/tuning.hpp"
 #include "lp/chebyshev_center.hpp"
 #include "topology/tet_mesh.hpp"
 
@@ -42,7 +43,7 @@ bool looks_open(const Embedding& e, const std::vector<VertexId>& movers) {
     if (const auto f = constraining_face(e, e.mesh.tet(t), movers))
       cone.rows.push_back(float_inner_row(e.target[(*f)[0]], e.target[(*f)[1]], e.target[(*f)[2]]));
   const lp::FloatChebyshev g = lp::float_chebyshev(cone.rows);
-  return g.optimal && g.radius > 1e-9 * g.scale;
+  return g.optimal && g.radius > tuning::subcluster_open_radius * g.scale;
 }
 
 bool usable(const Placement& p) {

@@ -7,6 +7,7 @@
 
 #include "algorithm/map_error.hpp"
 #include "algorithm/precision_loss.hpp"
+#include "algorithm/tuning.hpp"
 #include "arith/rounding.hpp"
 #include "lp/few_bit_point.hpp"
 #include "topology/chords.hpp"
@@ -39,7 +40,8 @@ class Preprocessor {
       fill_cluster_holes();
       const std::size_t splits = geometry_pass();
       if (cluster_simply_connected() && splits == 0) break;
-      if (round == 8 || (splits == 0 && !cluster_simply_connected())) {
+      if (round == tuning::preprocess_rounds_before_split_all ||
+          (splits == 0 && !cluster_simply_connected())) {
         split_all_chords();
         geometry_pass();
         break;

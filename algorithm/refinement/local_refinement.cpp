@@ -56,9 +56,8 @@ bool ClusterExpander::relax_base(VertexId v) {
 // Moves expanded vertex b to the Chebyshev centre of its star's kernel; true if it moved. The
 // move is optional: a non-exact run skips it when rounding would leave the kernel.
 bool ClusterExpander::recentre(VertexId b) {
-  const Placement p = place(gather_expansion_cone(e_, b), nullptr);
-  if (!p.ok() || p.rounded_outside || p.position == e_.target[b]) return false;
-  e_.target[b] = p.position;
+  const Placement p = place(gather_expansion_cone(e_, b), nullptr);  // counted with the loop's LPs
+  if (!move_to_placement(e_, b, p)) return false;
   ++stats_.relaxations;
   max_bits_ = std::max(max_bits_, p.position.bit_size());
   dirty_star(b);
@@ -226,8 +225,8 @@ bool ClusterExpander::inflate(VertexId v, int depth) {
 }
 
 // The last round's pushes for inflation's new vertices: real pushes one at a time, farthest from
-// the witness first, kept even when the cone does not open (measured, on the case without
-// interior vertices (P07) this partial progress is what lets the last round finish).
+// the witness first, kept even when the cone does not open: on inputs without interior vertices
+// this partial progress is what lets the last round finish.
 bool ClusterExpander::push_until_star_shaped(VertexId v, int k) {
   ConeBase base = cone_base(e_, v);
   if (base.triangles.empty()) return false;

@@ -4,7 +4,7 @@ from __future__ import annotations
 import json
 from fractions import Fraction
 from functools import cached_property
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Dict, Optional, Tuple
 
 import numpy as np
 
@@ -168,24 +168,43 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
         ids = _cmx.boundary_vertices(tets, n)
         positions = [W[i] for i in ids] if p_exact else W[ids]
     else:
-        if not isinstance(shape, str):
-            raise InvalidOptions(f"shape: expected a name such as 'sphere', got {shape!r}")
-        if exact:
-            doubles = np.array([[float(Fraction(x)) for x in row] for row in vertices], dtype=np.float64).reshape(-1, 3)
-        else:
-            doubles = vertices
-        bad = np.argwhere(~np.isfinite(doubles))
-        if bad.size:
-            i, k = bad[0]
-            raise InvalidInput(f"vertex {i}: coordinate {'xyz'[k]} is {'NaN' if np.isnan(doubles[i, k]) else 'infinite'}")
-        try:
-            ids, positions = _cmx.boundary_for_shape(doubles, tets, shape)
-        except Error as e:
-            message = str(e)
-            cls = InvalidOptions if message.startswith("unknown shape") else InvalidInput
-            raise cls(message) from None
+        ids, positions = _shape_boundary(shape, exact, vertices, tets)
         p_exact = False
 
+    opts = _run_options(options, init, time_limit, threads, n)
+
+    if exact or p_exact:
+        raw = _cmx.map_exact(_as_text(exact, vertices), tets, ids, _as_text(p_exact, positions), opts, progress)
+    else:
+        raw = _cmx.map_doubles(vertices, tets, ids, positions, opts, progress)
+    result = Result(raw)
+    if result.status in ("invalid_input", "invalid_options"):
+        raise _error(result)
+    return result
+
+
+def _shape_boundary(shape: Any, exact: bool, vertices: Any, tets: np.ndarray) -> Tuple[Any, Any]:
+    """The boundary ids and positions of a generated shape (cmx map --shape) for the mesh."""
+    if not isinstance(shape, str):
+        raise InvalidOptions(f"shape: expected a name such as 'sphere', got {shape!r}")
+    if exact:
+        doubles = np.array([[float(Fraction(x)) for x in row] for row in vertices], dtype=np.float64).reshape(-1, 3)
+    else:
+        doubles = vertices
+    bad = np.argwhere(~np.isfinite(doubles))
+    if bad.size:
+        i, k = bad[0]
+        raise InvalidInput(f"vertex {i}: coordinate {'xyz'[k]} is {'NaN' if np.isnan(doubles[i, k]) else 'infinite'}")
+    try:
+        return _cmx.boundary_for_shape(doubles, tets, shape)
+    except Error as e:
+        message = str(e)
+        cls = InvalidOptions if message.startswith("unknown shape") else InvalidInput
+        raise cls(message) from None
+
+
+def _run_options(options: Dict[str, Any], init: Any, time_limit: float, threads: int, n: int) -> Dict[str, Any]:
+    """The option dictionary the extension takes: keywords, the run controls and the initial map."""
     opts = dict(options)
     opts["time_limit"] = time_limit
     opts["threads"] = threads
@@ -200,15 +219,7 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
             opts["initial_target"] = t
         else:
             opts["initial_target_doubles"] = t
-
-    if exact or p_exact:
-        raw = _cmx.map_exact(_as_text(exact, vertices), tets, ids, _as_text(p_exact, positions), opts, progress)
-    else:
-        raw = _cmx.map_doubles(vertices, tets, ids, positions, opts, progress)
-    result = Result(raw)
-    if result.status in ("invalid_input", "invalid_options"):
-        raise _error(result)
-    return result
+    return opts
 
 
 def boundary_vertices(T: Any, vertex_count: Optional[int] = None) -> np.ndarray:

@@ -1,0 +1,39 @@
+#pragma once
+// The method's tuning constants, in one place, each with the reason for its value. None of them
+// decides correctness: every geometric decision they steer is certified exactly afterwards, so a
+// different value changes speed, refinement or how soon a heuristic gives up, never validity.
+// Changing one changes outputs: compare with scripts/compare-cli-outputs.sh.
+#include <cstddef>
+
+namespace cmx::algorithm::tuning {
+
+// Refinement budget of one run: beyond max(floor, per_input_vertex x input vertices) vertices the
+// loop stops as stuck: a run that refines a mesh fifty-fold has gone astray (growth on real
+// meshes is a few percent, bench/RESULTS.md); the floor keeps tiny inputs from stopping early.
+inline constexpr std::size_t vertex_budget_floor = 200000;
+inline constexpr std::size_t vertex_budget_per_input_vertex = 50;
+
+// The float Chebyshev LP of a cone, relative to the rows' scale (expansion/placement.hpp): a
+// radius above `cone_open_radius` is a clearly open kernel (then a float centre is worth trying
+// before the certified LP); at most `cone_closed_radius` is most likely empty (an exact proof of
+// emptiness is tried first). Between the two the cone is `unsure` and the exact LP decides.
+inline constexpr double cone_open_radius = 1e-6;
+inline constexpr double cone_closed_radius = 1e-11;
+
+// Subcluster screen (expansion/subcluster.cpp): a set of movers is tried exactly only when the
+// float LP of the union of their cones sees a kernel this open; lower than cone_open_radius
+// because a union that passes saves a star-shapification, so more candidates pay off.
+inline constexpr double subcluster_open_radius = 1e-9;
+
+// Rounds of the doubles repair (doubles/double_output.cpp): moves in the exact map first (every
+// move is safe there; a crowd that has not opened in 32 rounds does not open with more, the
+// crowd passes of doubles/decrowd.hpp do), then among the doubles themselves, where each round
+// re-reads every cone.
+inline constexpr std::size_t exact_repair_rounds = 32;
+inline constexpr std::size_t double_repair_rounds = 16;
+
+// Preprocessing (problem/preprocess.cpp) alternates topological and geometric passes; after this
+// many rounds it splits every chord at once (the predecessor's configuration, which ends surely).
+inline constexpr int preprocess_rounds_before_split_all = 8;
+
+}  // namespace cmx::algorithm::tuning
