@@ -145,18 +145,21 @@ TEST_CASE("map_to_domain: an initial map that is already valid comes back unchan
   CHECK(r.target == a.vertices);
 }
 
-TEST_CASE("map_to_domain: bad input and bad options are statuses with messages naming the culprit") {
+namespace {
+// A refused run: the status and reason, a message holding `words`, and no map.
+void expect(const cmx::MapResult& r, cmx::MapStatus status, const std::string& words, const std::string& reason = "") {
+  CHECK(r.status == status);
+  CHECK(r.reason == (reason.empty() ? cmx::to_string(status) : reason));
+  CHECK_FALSE(r.ok());
+  CHECK_MESSAGE(r.message.find(words) != std::string::npos, r.message);
+  CHECK(r.tets.empty());
+  CHECK(r.target.empty());
+}
+}  // namespace
+
+TEST_CASE("map_to_domain: bad input is a status with a message naming the culprit") {
   const Arrays a = grid();
   const cmx::ShapeBoundary shape = cmx::boundary_for_shape(a.vertices, a.tets, "sphere");
-  const auto expect = [](const cmx::MapResult& r, cmx::MapStatus status, const std::string& words,
-                         const std::string& reason = "") {
-    CHECK(r.status == status);
-    CHECK(r.reason == (reason.empty() ? cmx::to_string(status) : reason));
-    CHECK_FALSE(r.ok());
-    CHECK_MESSAGE(r.message.find(words) != std::string::npos, r.message);
-    CHECK(r.tets.empty());
-    CHECK(r.target.empty());
-  };
   {
     auto v = a.vertices;
     v[5][1] = std::numeric_limits<double>::quiet_NaN();
@@ -206,6 +209,13 @@ TEST_CASE("map_to_domain: bad input and bad options are statuses with messages n
     expect(cmx::map_to_domain(v, a.tets, shape.ids, p, quick()), cmx::MapStatus::invalid_input,
            "vertex 4: coordinate z '1/0' is not an exact number");
   }
+  CHECK_THROWS_AS(cmx::boundary_for_shape(a.vertices, a.tets, "teapot"), cmx::Error);
+  CHECK_THROWS_AS(cmx::boundary_vertices(std::vector<cmx::Tet>{{0, 1, 2, 9}}, 4), cmx::Error);
+}
+
+TEST_CASE("map_to_domain: bad options are statuses with messages naming the option") {
+  const Arrays a = grid();
+  const cmx::ShapeBoundary shape = cmx::boundary_for_shape(a.vertices, a.tets, "sphere");
   {
     cmx::MapOptions o = quick();
     o.order = "sideways";
@@ -224,8 +234,6 @@ TEST_CASE("map_to_domain: bad input and bad options are statuses with messages n
     expect(cmx::map_to_domain(a.vertices, a.tets, shape.ids, shape.positions, o),
            cmx::MapStatus::invalid_input, "initial target: 0 positions");
   }
-  CHECK_THROWS_AS(cmx::boundary_for_shape(a.vertices, a.tets, "teapot"), cmx::Error);
-  CHECK_THROWS_AS(cmx::boundary_vertices(std::vector<cmx::Tet>{{0, 1, 2, 9}}, 4), cmx::Error);
 }
 
 TEST_CASE("map_to_domain: the stop callback cancels a run") {
