@@ -24,8 +24,6 @@
 
 namespace cmx::algorithm {
 
-using Point3 = std::array<Rational, 3>;
-
 // A mapping problem: a ball-topology tet mesh with exact source positions (every tet positively
 // oriented) and exact prescribed positions for exactly its boundary vertices.
 struct MapProblem {

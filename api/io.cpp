@@ -16,7 +16,7 @@ namespace {
 
 constexpr const char* known_formats = "known: .ovm .vtu .vtk .mesh .msh .node/.ele .tmap";
 
-void to_text(const std::vector<io::Point3>& exact, std::vector<ExactPoint3>& text,
+void to_text(const std::vector<cmx::Point3>& exact, std::vector<ExactPoint3>& text,
              std::vector<Point3d>& doubles) {
   text.resize(exact.size());
   doubles.resize(exact.size());
@@ -29,14 +29,14 @@ void to_text(const std::vector<io::Point3>& exact, std::vector<ExactPoint3>& tex
 
 // The exact positions of `text` when not empty, else of `doubles` (then NaN and infinities are
 // refused); when both are given their sizes must agree. `what` names the points in messages.
-std::vector<io::Point3> exact_positions(const std::string& path, const char* what,
+std::vector<cmx::Point3> exact_positions(const std::string& path, const char* what,
                                         const std::vector<ExactPoint3>& text,
                                         const std::vector<Point3d>& doubles) {
   if (!text.empty() && !doubles.empty() && text.size() != doubles.size())
     throw Error(path + ": " + what + " has " + std::to_string(doubles.size()) + " doubles but " +
                 std::to_string(text.size()) + " exact points");
   const std::size_t n = text.empty() ? doubles.size() : text.size();
-  std::vector<io::Point3> out(n);
+  std::vector<cmx::Point3> out(n);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t k = 0; k < 3; ++k) {
       const std::string where =
@@ -59,7 +59,7 @@ std::vector<io::Point3> exact_positions(const std::string& path, const char* wha
 
 void write_file(const std::string& path, const Mesh& mesh) {
   const std::string ext = io::extension_of(path);
-  std::vector<io::Point3> exact = exact_positions(path, "point", mesh.points_exact, mesh.points);
+  std::vector<cmx::Point3> exact = exact_positions(path, "point", mesh.points_exact, mesh.points);
   if (ext == "tmap") {
     io::TetMap map{std::move(exact), exact_positions(path, "target point", mesh.target_exact, mesh.target),
                    mesh.tets};

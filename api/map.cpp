@@ -104,7 +104,7 @@ std::string axis_name(std::size_t axis) {
 }
 
 // One exact point from doubles; a non-finite coordinate is the failure, naming `what`.
-std::optional<Failure> exact_point(const Point3d& p, const std::string& what, algorithm::Point3& out) {
+std::optional<Failure> exact_point(const Point3d& p, const std::string& what, cmx::Point3& out) {
   for (std::size_t k = 0; k < 3; ++k) {
     if (!std::isfinite(p[k]))
       return Failure{MapStatus::invalid_input, what + ": coordinate " + axis_name(k) + " is " +
@@ -115,7 +115,7 @@ std::optional<Failure> exact_point(const Point3d& p, const std::string& what, al
 }
 
 // One exact point from text; text that is not an exact number is the failure, naming `what`.
-std::optional<Failure> exact_point(const ExactPoint3& p, const std::string& what, algorithm::Point3& out) {
+std::optional<Failure> exact_point(const ExactPoint3& p, const std::string& what, cmx::Point3& out) {
   for (std::size_t k = 0; k < 3; ++k) {
     std::string why;
     const auto q = parse_rational(p[k], &why);
@@ -131,7 +131,7 @@ std::optional<Failure> exact_point(const ExactPoint3& p, const std::string& what
 // `name(i)` names the i-th point in a message.
 template <class P, class Name>
 std::optional<Failure> exact_points(std::span<const P> points, Name name,
-                                    std::vector<algorithm::Point3>& out) {
+                                    std::vector<cmx::Point3>& out) {
   out.resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     if (auto f = exact_point(points[i], name(i), out[i])) return f;

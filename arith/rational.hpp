@@ -7,6 +7,7 @@
 // limits (so that a 20-byte token cannot ask for a 10^9-digit number).
 #include <gmpxx.h>
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -18,6 +19,8 @@ namespace cmx {
 
 using Integer = mpz_class;
 using Rational = mpq_class;
+// A point with exact rational coordinates (x, y, z): the one spelling every layer uses.
+using Point3 = std::array<Rational, 3>;
 
 // Largest |exponent| accepted: decimal "e" exponents and hexfloat binary "p" exponents.
 inline constexpr long max_decimal_exponent = 10000;

@@ -86,11 +86,11 @@ void check_outputs(const MapArgs& a) {
 }
 
 // The exact points of the public result's text, read back (canonical "p/q": exact round trip).
-std::vector<io::Point3> exact(const std::vector<ExactPoint3>& points) {
-  std::vector<io::Point3> out;
+std::vector<cmx::Point3> exact(const std::vector<ExactPoint3>& points) {
+  std::vector<cmx::Point3> out;
   out.reserve(points.size());
   for (const ExactPoint3& p : points) {
-    io::Point3 q;
+    cmx::Point3 q;
     for (std::size_t k = 0; k < 3; ++k) {
       const auto value = parse_rational(p[k]);
       if (!value) throw std::logic_error("cmx map: the library returned '" + p[k] + "', not a rational");
@@ -263,10 +263,10 @@ struct ExactProblem {
   std::vector<Tet> tets;
 };
 
-std::vector<ExactPoint3> exact_text(const std::vector<algorithm::Point3>& points) {
+std::vector<ExactPoint3> exact_text(const std::vector<cmx::Point3>& points) {
   std::vector<ExactPoint3> out;
   out.reserve(points.size());
-  for (const algorithm::Point3& p : points) out.push_back({to_string(p[0]), to_string(p[1]), to_string(p[2])});
+  for (const cmx::Point3& p : points) out.push_back({to_string(p[0]), to_string(p[1]), to_string(p[2])});
   return out;
 }
 

@@ -20,7 +20,6 @@
 
 namespace cmx::io {
 
-using Point3 = std::array<Rational, 3>;
 using Tet = std::array<std::uint32_t, 4>;
 
 // A per-vertex string property (OVM `VProp string "name"`), one value per vertex.

@@ -16,8 +16,6 @@
 
 namespace cmx::lp {
 
-using Point3 = std::array<Rational, 3>;
-
 std::size_t point_bits(const Point3& p);
 
 struct FewBitResult {

@@ -33,22 +33,22 @@ std::string_view to_string(PrecisionPolicy p) {
 
 namespace {
 
-HPoint to_hpoint(const lp::Point3& p) {
+HPoint to_hpoint(const cmx::Point3& p) {
   return HPoint(p[0], p[1], p[2]);
 }
 
-lp::Point3 to_point3(const HPoint& p) {
+cmx::Point3 to_point3(const HPoint& p) {
   return {p.coordinate(0), p.coordinate(1), p.coordinate(2)};
 }
 
 // Dyadic points on the segment from `from` toward `to` (t = 1/2, 1/4, ...), first strictly inside
 // with fewer bits than `cap`; nullopt when none within 64 halvings.
-std::optional<lp::Point3> segment_point(const std::vector<lp::HalfSpace>& h, const HPoint& from,
+std::optional<cmx::Point3> segment_point(const std::vector<lp::HalfSpace>& h, const HPoint& from,
                                         const HPoint& to, std::size_t cap) {
-  const lp::Point3 a = to_point3(from), b = to_point3(to);
+  const cmx::Point3 a = to_point3(from), b = to_point3(to);
   Rational t(1, 2);
   for (int step = 0; step < 64; ++step, t /= 2) {
-    lp::Point3 q;
+    cmx::Point3 q;
     for (int k = 0; k < 3; ++k)
       q[std::size_t(k)] = a[std::size_t(k)] + t * (b[std::size_t(k)] - a[std::size_t(k)]);
     if (lp::point_bits(q) >= cap) return std::nullopt;
@@ -63,16 +63,16 @@ std::optional<lp::Point3> segment_point(const std::vector<lp::HalfSpace>& h, con
 // cones see their neighbours well inside their own kernels: measured, this avoids most
 // star-shapifications that points merely "somewhere inside" cause. Falls back to the plain
 // inside test (with an l1 norm the ball is a cube, still inside).
-std::optional<lp::Point3> centred_dyadic(const std::vector<lp::HalfSpace>& h, const lp::Point3& c,
+std::optional<cmx::Point3> centred_dyadic(const std::vector<lp::HalfSpace>& h, const cmx::Point3& c,
                                          const Rational& r) {
   const Rational tol = r / 4;
-  auto close = [&](const lp::Point3& q) {
+  auto close = [&](const cmx::Point3& q) {
     for (int i = 0; i < 3; ++i)
       if (abs(q[std::size_t(i)] - c[std::size_t(i)]) > tol) return false;
     return lp::strictly_inside(h, q);
   };
   auto rounded = [&](unsigned k) {
-    lp::Point3 q;
+    cmx::Point3 q;
     for (int i = 0; i < 3; ++i) q[std::size_t(i)] = round_to_dyadic(c[std::size_t(i)], k).value();
     return q;
   };
@@ -97,12 +97,12 @@ std::optional<lp::Point3> centred_dyadic(const std::vector<lp::HalfSpace>& h, co
 }
 
 // Rounds out.position to a non-exact arith (see PlacementOptions::arith).
-void round_to_arith(const std::vector<lp::HalfSpace>& h, const lp::Point3& centre,
+void round_to_arith(const std::vector<lp::HalfSpace>& h, const cmx::Point3& centre,
                     const CoordinateArith& arith, Placement& out) {
   out.unrounded_bits = out.bits;
-  lp::Point3 q = to_point3(arith.round(out.position));
+  cmx::Point3 q = to_point3(arith.round(out.position));
   if (!lp::strictly_inside(h, q)) {
-    const lp::Point3 c = to_point3(arith.round(to_hpoint(centre)));
+    const cmx::Point3 c = to_point3(arith.round(to_hpoint(centre)));
     if (lp::strictly_inside(h, c))
       q = c;
     else

@@ -224,10 +224,10 @@ class Preprocessor {
   // coordinates are 0. So the few-bit centre gets as many coordinates zeroed as keeps it strictly
   // inside every constraint (the origin itself when the origin is inside); measured in
   // docs/algorithm.md, "Shrink point".
-  lp::Point3 with_zero_coordinates(const lp::Point3& centre) const {
+  cmx::Point3 with_zero_coordinates(const cmx::Point3& centre) const {
     // Masks of the coordinates set to zero, most zeros first.
     for (const unsigned mask : {7u, 3u, 5u, 6u, 1u, 2u, 4u}) {
-      lp::Point3 q = centre;
+      cmx::Point3 q = centre;
       for (unsigned i = 0; i < 3; ++i)
         if (mask & (1u << i)) q[i] = Rational(0);
       if (q != centre && lp::strictly_inside(accepted_, q)) return q;
@@ -241,7 +241,7 @@ class Preprocessor {
     if (!centre_) throw MapError(MapErrorKind::internal, "the shrink point constraints lost their interior");
     result_.shrink_radius = to_double(last_.radius);
     const lp::FewBitResult few = lp::few_bits_by_dyadics(accepted_, last_.center);
-    const lp::Point3 p = with_zero_coordinates(few.point);
+    const cmx::Point3 p = with_zero_coordinates(few.point);
     e_.center = e_.arith.round(HPoint(p[0], p[1], p[2]));
     if (!e_.arith.exact() &&
         !lp::strictly_inside(accepted_,

@@ -15,9 +15,8 @@ namespace cmx::algorithm {
 
 namespace {
 
-using R3 = std::array<Rational, 3>;
 
-R3 coords(const HPoint& p) { return {p.coordinate(0), p.coordinate(1), p.coordinate(2)}; }
+Point3 coords(const HPoint& p) { return {p.coordinate(0), p.coordinate(1), p.coordinate(2)}; }
 
 std::string tet_text(const topology::Tet& t) { return ids_text(t); }
 
@@ -124,7 +123,7 @@ struct PlaneTriangle {
 };
 
 // Signed area (times 2) of (p, q, r) projected by dropping axis `drop`.
-Rational projected_area(const R3& p, const R3& q, const R3& r, int drop) {
+Rational projected_area(const Point3& p, const Point3& q, const Point3& r, int drop) {
   const int i = drop == 0 ? 1 : 0, j = drop == 2 ? 1 : 2;
   return (q[i] - p[i]) * (r[j] - p[j]) - (q[j] - p[j]) * (r[i] - p[i]);
 }
@@ -143,7 +142,7 @@ PlaneTriangle make_triangle(const HPoint& a, const HPoint& b, const HPoint& c) {
   }
   int order[3] = {0, 1, 2};
   std::sort(order, order + 3, [&](int x, int y) { return n[x] > n[y]; });
-  const R3 ra = coords(a), rb = coords(b), rc = coords(c);
+  const Point3 ra = coords(a), rb = coords(b), rc = coords(c);
   for (int d : order) {
     t.area = projected_area(ra, rb, rc, d);
     t.drop = d;
@@ -221,7 +220,7 @@ class BoundaryTiling {
   // Adds output face f as a piece of triangle k: false when it does not lie in it with its orientation.
   bool add(std::size_t k, const topology::Triangle& f) {
     const PlaneTriangle& t = triangle(k);
-    R3 r[3];
+    Point3 r[3];
     for (int i = 0; i < 3; ++i) {
       if (!contains(t, pos_[f[i]])) return false;
       r[i] = coords(pos_[f[i]]);

@@ -18,7 +18,7 @@
 namespace cmx::test {
 
 inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh,
-                                          const std::vector<algorithm::Point3>& source,
+                                          const std::vector<cmx::Point3>& source,
                                           const std::vector<std::array<double, 3>>& source_doubles,
                                           const std::string& shape) {
   const auto spec = generators::parse_boundary_shape(shape);
@@ -42,7 +42,7 @@ inline algorithm::MapProblem problem_from(const generators::GeneratedDomain& d, 
 inline algorithm::MapProblem problem_from(const topology::TetMesh& mesh,
                                           const std::vector<std::array<double, 3>>& pos,
                                           const std::string& shape) {
-  std::vector<algorithm::Point3> exact;
+  std::vector<cmx::Point3> exact;
   for (const auto& q : pos)
     exact.push_back({rational_from_double(q[0]), rational_from_double(q[1]), rational_from_double(q[2])});
   return problem_from(mesh, exact, pos, shape);
