@@ -49,11 +49,11 @@ VertexId Embedding::split_face(VertexId a, VertexId b, VertexId c, const HPoint&
 }
 
 Sign Embedding::orient_target(const topology::Tet& t) const {
-  return orient3d(target[t[0]], target[t[1]], target[t[2]], target[t[3]], filter, stats);
+  return orient3d(target[t[0]], target[t[1]], target[t[2]], target[t[3]], {filter, stats});
 }
 
 Sign Embedding::orient_source(const topology::Tet& t) const {
-  return orient3d(source[t[0]], source[t[1]], source[t[2]], source[t[3]], filter, stats);
+  return orient3d(source[t[0]], source[t[1]], source[t[2]], source[t[3]], {filter, stats});
 }
 
 int Embedding::unexpanded_count(const topology::Tet& t) const {

@@ -67,20 +67,21 @@ int orient3d(const Point3d& a, const Point3d& b, const Point3d& c, const Point3d
              PredicateArithmetic arithmetic) {
   const double* const points[] = {a.data(), b.data(), c.data(), d.data()};
   require_finite("orient3d", points, 3);
-  return int(orient3d(a.data(), b.data(), c.data(), d.data(), policy_of(arithmetic)));
+  return int(
+      orient3d(a.data(), b.data(), c.data(), d.data(), PredicateContext{policy_of(arithmetic), nullptr}));
 }
 
 int orient3d(const ExactPoint3& a, const ExactPoint3& b, const ExactPoint3& c, const ExactPoint3& d,
              PredicateArithmetic arithmetic) {
   return int(orient3d(exact_point(a, 0), exact_point(b, 1), exact_point(c, 2), exact_point(d, 3),
-                      policy_of(arithmetic)));
+                      PredicateContext{policy_of(arithmetic), nullptr}));
 }
 
 int orient2d(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c,
              PredicateArithmetic arithmetic) {
   const double* const points[] = {a.data(), b.data(), c.data()};
   require_finite("orient2d", points, 2);
-  return int(orient2d(a.data(), b.data(), c.data(), policy_of(arithmetic)));
+  return int(orient2d(a.data(), b.data(), c.data(), PredicateContext{policy_of(arithmetic), nullptr}));
 }
 
 }  // namespace cmx

@@ -48,10 +48,11 @@ int run_demo() {
   double p[4][3];
   for (int i = 0; i < 4; ++i)
     for (int k = 0; k < 3; ++k) p[i][k] = to_double(*parse_rational(text[i][k]));
-  const Sign naive = orient3d(p[0], p[1], p[2], p[3], FilterPolicy{FilterPolicy::Kind::naive, 0});
+  const Sign naive = orient3d(p[0], p[1], p[2], p[3], {FilterPolicy{FilterPolicy::Kind::naive, 0}, nullptr});
   FilterStats stats;
-  const Sign exact = orient3d(p[0], p[1], p[2], p[3], FilterPolicy{}, &stats);
-  const Sign reference = orient3d(p[0], p[1], p[2], p[3], FilterPolicy{FilterPolicy::Kind::exact, 0});
+  const Sign exact = orient3d(p[0], p[1], p[2], p[3], {FilterPolicy{}, &stats});
+  const Sign reference =
+      orient3d(p[0], p[1], p[2], p[3], {FilterPolicy{FilterPolicy::Kind::exact, 0}, nullptr});
   std::printf("orient3d demo: four nearly coplanar points (Kettner et al. 2004, witness B1, lifted to 3D)\n");
   for (int i = 0; i < 4; ++i)
     std::printf("  %c = (%.17g, %.17g, %.17g)\n", "abcd"[i], p[i][0], p[i][1], p[i][2]);
@@ -101,7 +102,7 @@ int answer_lines(std::istream& in, const FilterPolicy& policy, bool show_stats) 
       continue;
     }
     const HPoint a(q[0], q[1], q[2]), b(q[3], q[4], q[5]), c(q[6], q[7], q[8]), d(q[9], q[10], q[11]);
-    std::putchar(sign_char(orient3d(a, b, c, d, policy, &stats)));
+    std::putchar(sign_char(orient3d(a, b, c, d, {policy, &stats})));
     std::putchar('\n');
   }
   std::fflush(stdout);

@@ -21,7 +21,7 @@
 #include "kernel/orient.hpp"
 #include "kernel/orient_adaptive.hpp"
 #include "kernel/orient_exact.hpp"
-#include "kernel/orient_interval.hpp"
+#include "kernel/orient_predicates.hpp"
 #include "kernel/orient_semistatic.hpp"
 #include "kernel/orient_standalone.hpp"
 
@@ -81,7 +81,7 @@ void check_doubles(Reader& r) {
   if (!finite) {
     for (const char* name : {"cascade", "interval", "exact", "naive"}) {
       try {
-        (void)cmx::orient3d(a, b, c, d, *parse_filter_policy(name));
+        (void)cmx::orient3d(a, b, c, d, {*parse_filter_policy(name), nullptr});
         fail("NaN/Inf input returned a sign");
       } catch (const std::domain_error&) {
       }
@@ -96,20 +96,23 @@ void check_doubles(Reader& r) {
   const HPoint ha = HPoint::from_doubles(a[0], a[1], a[2]), hb = HPoint::from_doubles(b[0], b[1], b[2]);
   const HPoint hc = HPoint::from_doubles(c[0], c[1], c[2]), hd = HPoint::from_doubles(d[0], d[1], d[2]);
   const Sign exact = orient3d_exact(ha, hb, hc, hd);
-  if (cmx::orient3d(a, b, c, d) != exact) fail("cascade (doubles)");
-  if (cmx::orient3d(ha, hb, hc, hd) != exact) fail("cascade (HPoints)");
-  if (cmx::orient3d(a, b, c, d, *parse_filter_policy("interval")) != exact) fail("interval policy");
-  if (cmx::orient3d(a, b, c, d, *parse_filter_policy("exact")) != exact) fail("exact policy");
-  if (cmx::orient3d(b, a, c, d) != -exact) fail("antisymmetry");
-  if (cmx::orient3d(b, c, a, d) != exact) fail("cyclic symmetry");
+  if (cmx::orient3d(a, b, c, d, cmx::PredicateContext::certain()) != exact) fail("cascade (doubles)");
+  if (cmx::orient3d(ha, hb, hc, hd, cmx::PredicateContext::certain()) != exact) fail("cascade (HPoints)");
+  if (cmx::orient3d(a, b, c, d, {*parse_filter_policy("interval"), nullptr}) != exact)
+    fail("interval policy");
+  if (cmx::orient3d(a, b, c, d, {*parse_filter_policy("exact"), nullptr}) != exact) fail("exact policy");
+  if (cmx::orient3d(b, a, c, d, cmx::PredicateContext::certain()) != -exact) fail("antisymmetry");
+  if (cmx::orient3d(b, c, a, d, cmx::PredicateContext::certain()) != exact) fail("cyclic symmetry");
   if (auto s = semistatic::orient3d(a, b, c, d); s && *s != exact) fail("semi-static filter");
-  if (auto s = orient3d_interval(a, b, c, d); s && *s != exact) fail("interval tier");
+  if (auto s = try_tier<Orient3d, IntervalTier>(DoubleArgs<4>{{a, b, c, d}}, FilterPolicy{});
+      s && *s != exact)
+    fail("interval tier");
   if (adaptive::in_adaptive_range(p, 12) && adaptive::orient3d(a, b, c, d, nullptr) != exact) fail("adaptive");
   if (standalone::orient3d(a, b, c, d) != exact) fail("header-only orient3d");
   const Sign e2 = orient2d_exact(ha, hb, hc);
-  if (cmx::orient2d(ha, hb, hc) != e2) fail("orient2d cascade");
+  if (cmx::orient2d(ha, hb, hc, cmx::PredicateContext::certain()) != e2) fail("orient2d cascade");
   const double a2[2] = {a[0], a[1]}, b2[2] = {b[0], b[1]}, c2[2] = {c[0], c[1]};
-  if (cmx::orient2d(a2, b2, c2) != e2) fail("orient2d cascade (doubles)");
+  if (cmx::orient2d(a2, b2, c2, cmx::PredicateContext::certain()) != e2) fail("orient2d cascade (doubles)");
   if (standalone::orient2d(a2, b2, c2) != e2) fail("header-only orient2d");
 }
 
@@ -123,12 +126,16 @@ void check_rationals(Reader& r) {
   }
   const HPoint a(q[0], q[1], q[2]), b(q[3], q[4], q[5]), c(q[6], q[7], q[8]), d(q[9], q[10], q[11]);
   const Sign exact = orient3d_exact(a, b, c, d);
-  if (cmx::orient3d(a, b, c, d) != exact) fail("cascade (rationals)");
-  if (cmx::orient3d(a, b, c, d, *parse_filter_policy("mpfr:40")) != exact) fail("mpfr policy");
-  if (auto s = orient3d_interval(a, b, c, d); s && *s != exact) fail("interval tier (rationals)");
-  if (auto s = orient3d_mpfr(a, b, c, d, 24); s && *s != exact) fail("mpfr tier (rationals)");
-  if (cmx::orient3d(a, b, d, c) != -exact) fail("antisymmetry (rationals)");
-  if (cmx::orient2d(a, b, c) != orient2d_exact(a, b, c)) fail("orient2d (rationals)");
+  if (cmx::orient3d(a, b, c, d, cmx::PredicateContext::certain()) != exact) fail("cascade (rationals)");
+  if (cmx::orient3d(a, b, c, d, {*parse_filter_policy("mpfr:40"), nullptr}) != exact) fail("mpfr policy");
+  const PointArgs<4> args{{&a, &b, &c, &d}};
+  if (auto s = try_tier<Orient3d, IntervalTier>(args, FilterPolicy{}); s && *s != exact)
+    fail("interval tier (rationals)");
+  const FilterPolicy mpfr24{FilterPolicy::Kind::mpfr, 24};
+  if (auto s = try_tier<Orient3d, MpfrTier>(args, mpfr24); s && *s != exact) fail("mpfr tier (rationals)");
+  if (cmx::orient3d(a, b, d, c, cmx::PredicateContext::certain()) != -exact) fail("antisymmetry (rationals)");
+  if (cmx::orient2d(a, b, c, cmx::PredicateContext::certain()) != orient2d_exact(a, b, c))
+    fail("orient2d (rationals)");
 }
 
 }  // namespace

@@ -412,7 +412,7 @@ std::string check_star_shaped_about_origin(const topology::TetMesh& mesh, const 
     const auto& a = boundary.positions[slot[f.face[0]]];
     const auto& b = boundary.positions[slot[f.face[1]]];
     const auto& c = boundary.positions[slot[f.face[2]]];
-    const Sign s = orient3d(a.data(), b.data(), c.data(), origin);
+    const Sign s = orient3d(a.data(), b.data(), c.data(), origin, PredicateContext::certain());
     if (s == Sign::zero)
       return text("boundary face ", face_text(f.face), " is degenerate or its plane contains the origin");
     if (s == Sign::positive) return text("boundary face ", face_text(f.face), " does not see the origin on its inner side");

@@ -41,7 +41,9 @@ GeneratedDomain from_grid(topology::GridComplex grid, std::int32_t shift) {
 bool star_positive(const topology::TetMesh& mesh, topology::VertexId v, const std::vector<HPoint>& points) {
   for (auto t : mesh.tets_of(v)) {
     const auto& tet = mesh.tet(t);
-    if (orient3d(points[tet[0]], points[tet[1]], points[tet[2]], points[tet[3]]) != Sign::positive) return false;
+    if (orient3d(points[tet[0]], points[tet[1]], points[tet[2]], points[tet[3]],
+                 PredicateContext::certain()) != Sign::positive)
+      return false;
   }
   return true;
 }

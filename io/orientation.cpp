@@ -30,7 +30,9 @@ std::vector<Sign> signs_of(const TetMeshData& mesh) {
   const auto points = to_hpoints(mesh);
   std::vector<Sign> signs;
   signs.reserve(mesh.tets.size());
-  for (const auto& t : mesh.tets) signs.push_back(orient3d(points[t[0]], points[t[1]], points[t[2]], points[t[3]]));
+  for (const auto& t : mesh.tets)
+    signs.push_back(
+        orient3d(points[t[0]], points[t[1]], points[t[2]], points[t[3]], PredicateContext::certain()));
   return signs;
 }
 

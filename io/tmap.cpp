@@ -21,7 +21,8 @@ void check_positive(const std::vector<Point3>& positions, const std::vector<Tet>
   for (const auto& x : positions) p.emplace_back(x[0], x[1], x[2]);
   for (std::size_t i = 0; i < tets.size(); ++i) {
     const auto& t = tets[i];
-    const Sign s = orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]]);
+    const Sign s =
+        orient3d(p[t[0]], p[t[1]], p[t[2]], p[t[3]], PredicateContext::certain());  // reading a map checks it
     if (s != Sign::positive)
       throw IoError(s == Sign::zero ? ErrorKind::degenerate_tet : ErrorKind::inconsistent_orientation, name, lines[i],
                     "tet " + std::to_string(i) + " is " + (s == Sign::zero ? "degenerate" : "negatively oriented") +

@@ -19,7 +19,7 @@ std::optional<FilterPolicy> parse_filter_policy(std::string_view name, std::stri
   if (name == "naive") return FilterPolicy{K::naive, 0};
   if (name.substr(0, 5) == "mpfr:") {
     if (const auto bits = parse_bounded_integer(name.substr(5), min_mpfr_bits, max_mpfr_bits))
-      return FilterPolicy{K::mpfr, *bits};
+      return FilterPolicy{K::mpfr, std::int32_t(*bits)};
     if (why) *why = "bad precision in filter '" + std::string(name) + "': expected " + valid_names;
     return std::nullopt;
   }

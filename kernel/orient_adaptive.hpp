@@ -19,7 +19,6 @@
 
 #include "arith/expansion.hpp"
 #include "arith/sign.hpp"
-#include "kernel/filter_policy.hpp"
 
 namespace cmx::adaptive {
 
@@ -43,14 +42,15 @@ inline Sign sign_of_double(double x) {
   return x > 0 ? Sign::positive : x < 0 ? Sign::negative : Sign::zero;
 }
 
-inline void count(FilterStats* stats, int stage) {
-  if (stats) ++stats->adaptive[stage];
+// Reports the deciding stage (0..3 for A..D) to the caller, which counts it.
+inline void report(int* decided_by, int stage) {
+  if (decided_by) *decided_by = stage;
 }
 
-// The sign of det when |det| >= bound, the stage's certificate (counted as `stage`); else none.
-inline UncertainSign certified(double det, double bound, FilterStats* stats, int stage) {
+// The sign of det when |det| >= bound, the stage's certificate (reported as `stage`); else none.
+inline UncertainSign certified(double det, double bound, int* stage_out, int stage) {
   if (!(det >= bound || -det >= bound)) return std::nullopt;
-  count(stats, stage);
+  report(stage_out, stage);
   return sign_of_double(det);
 }
 
@@ -94,7 +94,7 @@ inline Sign orient3d_exact_stage(const double* ux, int uxn, const double* uy, in
 
 // Stages B, C and D, entered when stage A could not decide.
 inline Sign orient3d_stages_bcd(const double* a, const double* b, const double* c, const double* d,
-                                double permanent, FilterStats* stats) {
+                                double permanent, int* stage_out) {
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
   const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
@@ -119,7 +119,7 @@ inline Sign orient3d_stages_bcd(const double* a, const double* b, const double* 
   const int nb = fast_expansion_sum_zeroelim(nxy, txy, nz, tz, bexp);
   double det = estimate(nb, bexp);
   const double bound_b = o3d_bound_b * permanent;
-  if (const UncertainSign s = certified(det, bound_b, stats, 1)) return *s;
+  if (const UncertainSign s = certified(det, bound_b, stage_out, 1)) return *s;
 
   const double uxt = two_diff_tail(b[0], a[0], ux), uyt = two_diff_tail(b[1], a[1], uy);
   const double uzt = two_diff_tail(b[2], a[2], uz), vxt = two_diff_tail(c[0], a[0], vx);
@@ -129,7 +129,7 @@ inline Sign orient3d_stages_bcd(const double* a, const double* b, const double* 
   if (uxt == 0.0 && uyt == 0.0 && uzt == 0.0 && vxt == 0.0 && vyt == 0.0 && vzt == 0.0 && wxt == 0.0 &&
       wyt == 0.0 && wzt == 0.0) {
     // No difference was rounded: B is the exact determinant.
-    count(stats, 1);
+    report(stage_out, 1);
     return Sign(expansion::sign(nb, bexp));
   }
 
@@ -138,7 +138,7 @@ inline Sign orient3d_stages_bcd(const double* a, const double* b, const double* 
   det += (ux * ((vy * wzt + wz * vyt) - (vz * wyt + wy * vzt)) + uxt * (vy * wz - vz * wy)) +
          (uy * ((vz * wxt + wx * vzt) - (vx * wzt + wz * vxt)) + uyt * (vz * wx - vx * wz)) +
          (uz * ((vx * wyt + wy * vxt) - (vy * wxt + wx * vyt)) + uzt * (vx * wy - vy * wx));
-  if (const UncertainSign s = certified(det, bound_c, stats, 2)) return *s;
+  if (const UncertainSign s = certified(det, bound_c, stage_out, 2)) return *s;
 
   // Stage D: exact, on the exact differences head + tail.
   double eux[2], euy[2], euz[2], evx[2], evy[2], evz[2], ewx[2], ewy[2], ewz[2];
@@ -147,13 +147,13 @@ inline Sign orient3d_stages_bcd(const double* a, const double* b, const double* 
   const int nvy = exact_difference(vy, vyt, evy), nvz = exact_difference(vz, vzt, evz);
   const int nwx = exact_difference(wx, wxt, ewx), nwy = exact_difference(wy, wyt, ewy);
   const int nwz = exact_difference(wz, wzt, ewz);
-  count(stats, 3);
+  report(stage_out, 3);
   return orient3d_exact_stage(eux, nux, euy, nuy, euz, nuz, evx, nvx, evy, nvy, evz, nvz, ewx, nwx, ewy, nwy,
                               ewz, nwz);
 }
 
 inline Sign orient2d_stages_bcd(const double* a, const double* b, const double* c, double detsum,
-                                FilterStats* stats) {
+                                int* stage_out) {
   const double ux = b[0] - a[0], uy = b[1] - a[1];
   const double vx = c[0] - a[0], vy = c[1] - a[1];
   double p1, p0, q1, q0, bexp4[4], bexp[5];
@@ -163,21 +163,21 @@ inline Sign orient2d_stages_bcd(const double* a, const double* b, const double* 
   const int nb = grow_expansion_zeroelim(4, bexp4, 0.0, bexp);  // drop zeros for sign()
   double det = estimate(nb, bexp);
   const double bound_b = o2d_bound_b * detsum;
-  if (const UncertainSign s = certified(det, bound_b, stats, 1)) return *s;
+  if (const UncertainSign s = certified(det, bound_b, stage_out, 1)) return *s;
   const double uxt = two_diff_tail(b[0], a[0], ux), uyt = two_diff_tail(b[1], a[1], uy);
   const double vxt = two_diff_tail(c[0], a[0], vx), vyt = two_diff_tail(c[1], a[1], vy);
   if (uxt == 0.0 && uyt == 0.0 && vxt == 0.0 && vyt == 0.0) {
-    count(stats, 1);
+    report(stage_out, 1);
     return Sign(expansion::sign(nb, bexp));
   }
   const double bound_c = o2d_bound_c * detsum + result_bound * std::fabs(det);
   det += (ux * vyt + vy * uxt) - (uy * vxt + vx * uyt);
-  if (const UncertainSign s = certified(det, bound_c, stats, 2)) return *s;
+  if (const UncertainSign s = certified(det, bound_c, stage_out, 2)) return *s;
   double eux[2], euy[2], evx[2], evy[2], h[16];
   const int nux = exact_difference(ux, uxt, eux), nuy = exact_difference(uy, uyt, euy);
   const int nvx = exact_difference(vx, vxt, evx), nvy = exact_difference(vy, vyt, evy);
   const int n = minor2(eux, nux, evy, nvy, euy, nuy, evx, nvx, h);
-  count(stats, 3);
+  report(stage_out, 3);
   return Sign(expansion::sign(n, h));
 }
 
@@ -193,8 +193,9 @@ inline bool in_adaptive_range(const double* coordinates, int count) {
   return true;
 }
 
-// Exact sign of det[b-a, c-a, d-a]; counts the deciding stage in stats->adaptive[0..3].
-inline Sign orient3d(const double* a, const double* b, const double* c, const double* d, FilterStats* stats) {
+// Exact sign of det[b-a, c-a, d-a]; stores the deciding stage (0..3 for A..D) in *stage_out unless
+// stage_out is null.
+inline Sign orient3d(const double* a, const double* b, const double* c, const double* d, int* stage_out) {
   // Stage A.
   const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
   const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
@@ -206,14 +207,14 @@ inline Sign orient3d(const double* a, const double* b, const double* c, const do
                            (std::fabs(vxwy) + std::fabs(vywx)) * std::fabs(uz);
   const double bound_a = detail::o3d_bound_a * permanent;
   if (det > bound_a || -det > bound_a) {
-    detail::count(stats, 0);
+    detail::report(stage_out, 0);
     return detail::sign_of_double(det);
   }
-  return detail::orient3d_stages_bcd(a, b, c, d, permanent, stats);
+  return detail::orient3d_stages_bcd(a, b, c, d, permanent, stage_out);
 }
 
-// Exact sign of det[b-a, c-a] on x and y.
-inline Sign orient2d(const double* a, const double* b, const double* c, FilterStats* stats) {
+// Exact sign of det[b-a, c-a] on x and y; the deciding stage as for orient3d.
+inline Sign orient2d(const double* a, const double* b, const double* c, int* stage_out) {
   const double ux = b[0] - a[0], uy = b[1] - a[1];
   const double vx = c[0] - a[0], vy = c[1] - a[1];
   const double left = ux * vy, right = uy * vx;
@@ -221,10 +222,10 @@ inline Sign orient2d(const double* a, const double* b, const double* c, FilterSt
   const double detsum = std::fabs(left) + std::fabs(right);
   const double bound_a = detail::o2d_bound_a * detsum;
   if (det > bound_a || -det > bound_a) {
-    detail::count(stats, 0);
+    detail::report(stage_out, 0);
     return detail::sign_of_double(det);
   }
-  return detail::orient2d_stages_bcd(a, b, c, detsum, stats);
+  return detail::orient2d_stages_bcd(a, b, c, detsum, stage_out);
 }
 
 }  // namespace cmx::adaptive

@@ -74,7 +74,7 @@ Scan scan(const Embedding& e, const std::vector<std::array<double, 3>>& doubles)
   for (TetId t : e.mesh.live_tets()) {
     const topology::Tet& tet = e.mesh.tet(t);
     const Sign s = orient3d(doubles[tet[0]].data(), doubles[tet[1]].data(), doubles[tet[2]].data(),
-                            doubles[tet[3]].data());
+                            doubles[tet[3]].data(), PredicateContext::certain());  // a check of output
     if (s == Sign::positive) continue;
     ++(s == Sign::negative ? out.check.inverted : out.check.degenerate);
     for (VertexId v : tet)
@@ -197,7 +197,8 @@ bool all_boundary(const Embedding& e, const topology::Tet& t) {
 }
 
 bool positive(const std::vector<std::array<double, 3>>& d, const topology::Tet& t) {
-  return orient3d(d[t[0]].data(), d[t[1]].data(), d[t[2]].data(), d[t[3]].data()) == Sign::positive;
+  return orient3d(d[t[0]].data(), d[t[1]].data(), d[t[2]].data(), d[t[3]].data(),
+                  PredicateContext::certain()) == Sign::positive;
 }
 
 // Boundary vertices never move, so a tet of four boundary vertices that the nearest doubles of

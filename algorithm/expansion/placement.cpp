@@ -159,7 +159,7 @@ std::optional<Placement> place_at_point(const Embedding& e, VertexId v, const st
     ++rows;
     std::array<const HPoint*, 4> p;
     for (std::size_t i = 0; i < 4; ++i) p[i] = tet[i] == v ? &q : &e.target[tet[i]];
-    if (orient3d(*p[0], *p[1], *p[2], *p[3], e.filter, e.stats) != Sign::positive) return std::nullopt;
+    if (orient3d(*p[0], *p[1], *p[2], *p[3], {e.filter, e.stats}) != Sign::positive) return std::nullopt;
   }
   Placement out;
   out.status = lp::ChebyshevStatus::interior;

@@ -259,8 +259,10 @@ void star_statistics(const StarSet& stars, std::size_t input_tets, LocalRepairSt
 // Tets of `tets` not positive in the doubles `at` (signs exact for those doubles).
 std::size_t folded_in_doubles(const std::vector<Tet>& tets, const std::vector<std::array<double, 3>>& at) {
   std::size_t folded = 0;
+  // A check of doubles: exact whatever --filter says, not counted.
   for (const Tet& t : tets)
-    folded += orient3d(at[t[0]].data(), at[t[1]].data(), at[t[2]].data(), at[t[3]].data()) != Sign::positive;
+    folded += orient3d(at[t[0]].data(), at[t[1]].data(), at[t[2]].data(), at[t[3]].data(),
+                       PredicateContext::certain()) != Sign::positive;
   return folded;
 }
 

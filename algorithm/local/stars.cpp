@@ -19,7 +19,9 @@ void classify(const topology::TetMesh& mesh, const std::vector<HPoint>& target, 
   out.states.assign(mesh.tet_capacity(), TetState::positive);
   for (TetId t : mesh.live_tets()) {
     const topology::Tet& x = mesh.tet(t);
-    const Sign s = orient3d(target[x[0]], target[x[1]], target[x[2]], target[x[3]]);
+    // Exact whatever --filter says: the stars of the local initial map are classified, not counted.
+    const Sign s =
+        orient3d(target[x[0]], target[x[1]], target[x[2]], target[x[3]], PredicateContext::certain());
     if (s == Sign::negative) {
       out.states[t] = TetState::inverted;
       ++out.inverted;

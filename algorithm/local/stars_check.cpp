@@ -30,7 +30,9 @@ std::string ids(const std::vector<VertexId>& vs) {
 
 TetState state_of(const topology::TetMesh& mesh, const std::vector<HPoint>& target, TetId t) {
   const topology::Tet& x = mesh.tet(t);
-  const Sign s = orient3d(target[x[0]], target[x[1]], target[x[2]], target[x[3]]);
+  // Exact whatever --filter says: the stars of the local initial map are classified, not counted.
+  const Sign s =
+      orient3d(target[x[0]], target[x[1]], target[x[2]], target[x[3]], PredicateContext::certain());
   return s == Sign::positive ? TetState::positive : s == Sign::zero ? TetState::flat : TetState::inverted;
 }
 

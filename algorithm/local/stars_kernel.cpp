@@ -63,7 +63,8 @@ Viewpoint choose_viewpoint(const GrowingStar& star, const std::vector<std::array
 
 bool sees_inside(const GrowingStar& star, const std::vector<HPoint>& target, const FaceRef& f, const HPoint& p) {
   const topology::Triangle t = star.triangle(f);
-  return orient3d(target[t[0]], target[t[1]], target[t[2]], p) == Sign::negative;
+  // Exact whatever --filter says: the stars of the local initial map are classified, not counted.
+  return orient3d(target[t[0]], target[t[1]], target[t[2]], p, PredicateContext::certain()) == Sign::negative;
 }
 
 bool exact_kernel_has_interior(const GrowingStar& star, const std::vector<HPoint>& target, const lp::ChebyshevOptions& lp) {

@@ -102,7 +102,8 @@ ValidatedProblem validate_problem(const MapProblem& p, const FilterPolicy& filte
   for (const auto& q : p.source) v.source.emplace_back(q[0], q[1], q[2]);
   for (std::size_t t = 0; t < p.tets.size(); ++t) {
     const auto& x = p.tets[t];
-    const Sign s = orient3d(v.source[x[0]], v.source[x[1]], v.source[x[2]], v.source[x[3]], filter);
+    const Sign s =
+        orient3d(v.source[x[0]], v.source[x[1]], v.source[x[2]], v.source[x[3]], {filter, nullptr});
     if (s != Sign::positive)
       throw MapError(MapErrorKind::source_not_positive,
                      std::string(s == Sign::zero ? "flat (zero volume)" : "inverted (negatively oriented)") + " in the source mesh",

@@ -370,7 +370,8 @@ DoubleCheck check_doubles(const std::vector<topology::Tet>& tets, const std::vec
   // The cascade on raw doubles is exact (adaptive expansions), and much cheaper than GMP.
   DoubleCheck c;
   for (const auto& t : tets) {
-    const Sign s = orient3d(d[t[0]].data(), d[t[1]].data(), d[t[2]].data(), d[t[3]].data());
+    const Sign s =
+        orient3d(d[t[0]].data(), d[t[1]].data(), d[t[2]].data(), d[t[3]].data(), PredicateContext::certain());
     if (s == Sign::negative) ++c.inverted;
     if (s == Sign::zero) ++c.degenerate;
   }

@@ -86,7 +86,7 @@ void BM_naive(benchmark::State& st) {
   for (auto _ : st) {
     const Quad& q = v[i++ & (pool - 1)];
     benchmark::DoNotOptimize(cmx::orient3d(q[0].data(), q[1].data(), q[2].data(), q[3].data(),
-                                           FilterPolicy{FilterPolicy::Kind::naive, 0}));
+                                           {FilterPolicy{FilterPolicy::Kind::naive, 0}, nullptr}));
   }
   st.SetLabel(kind_name[st.range(0)]);
 }
@@ -115,7 +115,7 @@ void BM_double_policy(benchmark::State& st, const char* policy) {
   std::size_t i = 0;
   for (auto _ : st) {
     const Quad& q = v[i++ & (pool - 1)];
-    benchmark::DoNotOptimize(cmx::orient3d(q[0].data(), q[1].data(), q[2].data(), q[3].data(), p));
+    benchmark::DoNotOptimize(cmx::orient3d(q[0].data(), q[1].data(), q[2].data(), q[3].data(), {p, nullptr}));
   }
   st.SetLabel(kind_name[st.range(0)]);
 }
@@ -126,7 +126,7 @@ void BM_hpoint_policy(benchmark::State& st, const char* policy) {
   std::size_t i = 0;
   for (auto _ : st) {
     const auto& q = h[i++ & (pool - 1)];
-    benchmark::DoNotOptimize(cmx::orient3d(q[0], q[1], q[2], q[3], p));
+    benchmark::DoNotOptimize(cmx::orient3d(q[0], q[1], q[2], q[3], {p, nullptr}));
   }
   st.SetLabel(kind_name[st.range(0)]);
 }
@@ -183,7 +183,7 @@ void BM_rational_cascade(benchmark::State& st) {
   std::size_t i = 0;
   for (auto _ : st) {
     const auto& q = s.h[i++ % rpool];
-    benchmark::DoNotOptimize(cmx::orient3d(q[0], q[1], q[2], q[3]));
+    benchmark::DoNotOptimize(cmx::orient3d(q[0], q[1], q[2], q[3], cmx::PredicateContext::certain()));
   }
 }
 void BM_rational_homogeneous_exact(benchmark::State& st) {

@@ -56,7 +56,8 @@ void BM_gmp_cascade(benchmark::State& st) {
   std::size_t i = 0;
   for (auto _ : st) {
     const Quad& q = v[i++ & (pool - 1)];
-    benchmark::DoNotOptimize(cmx::orient3d(q[0].data(), q[1].data(), q[2].data(), q[3].data()));
+    benchmark::DoNotOptimize(
+        cmx::orient3d(q[0].data(), q[1].data(), q[2].data(), q[3].data(), cmx::PredicateContext::certain()));
   }
   st.SetLabel(names[st.range(0)]);
 }

@@ -34,7 +34,7 @@ DoubleCheck recount(const std::vector<topology::Tet>& tets, const std::vector<st
   for (const auto& t : tets) {
     std::array<HPoint, 4> p;
     for (int i = 0; i < 4; ++i) p[std::size_t(i)] = HPoint::from_doubles(d[t[i]][0], d[t[i]][1], d[t[i]][2]);
-    const Sign s = orient3d(p[0], p[1], p[2], p[3], exact);
+    const Sign s = orient3d(p[0], p[1], p[2], p[3], {exact, nullptr});
     if (s == Sign::negative) ++c.inverted;
     if (s == Sign::zero) ++c.degenerate;
   }

@@ -36,7 +36,7 @@ std::size_t non_positive_tets(const MapProblem& p, const std::vector<Point3>& ta
   for (const Point3& q : target) h.emplace_back(q[0], q[1], q[2]);
   std::size_t count = 0;
   for (const topology::Tet& t : p.tets)
-    if (orient3d(h[t[0]], h[t[1]], h[t[2]], h[t[3]]) != Sign::positive) ++count;
+    if (orient3d(h[t[0]], h[t[1]], h[t[2]], h[t[3]], PredicateContext::certain()) != Sign::positive) ++count;
   return count;
 }
 

@@ -78,7 +78,8 @@ TEST_CASE("too few bits: the loss is reported with a tet that is really not posi
   CHECK(r.message.find("vertex " + std::to_string(l.vertex)) != std::string::npos);
   REQUIRE(l.tet);
   CHECK(std::find(l.tet->begin(), l.tet->end(), l.vertex) != l.tet->end());
-  const Sign s = orient3d(l.corners[0], l.corners[1], l.corners[2], l.corners[3], FilterPolicy{});
+  const Sign s =
+      orient3d(l.corners[0], l.corners[1], l.corners[2], l.corners[3], PredicateContext::certain());
   CHECK(s != Sign::positive);
   CHECK(s == l.orientation);
   // The state returned is the one where validity was lost: the tet is there, at those corners.

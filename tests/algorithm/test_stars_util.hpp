@@ -100,7 +100,8 @@ inline void fold(InitialMap& m, const std::array<double, 3>& centre, double radi
 
 inline bool defect(const InitialMap& m, topology::TetId t) {
   const topology::Tet& x = m.mesh().tet(t);
-  return orient3d(m.target[x[0]], m.target[x[1]], m.target[x[2]], m.target[x[3]]) != Sign::positive;
+  return orient3d(m.target[x[0]], m.target[x[1]], m.target[x[2]], m.target[x[3]],
+                  PredicateContext::certain()) != Sign::positive;
 }
 
 inline std::size_t count_defects(const InitialMap& m) {

@@ -25,8 +25,8 @@ bool all_tets_positive(const GeneratedDomain& d) {
   for (const auto& x : d.positions) p.emplace_back(x[0], x[1], x[2]);
   for (auto t : d.mesh.live_tets()) {
     const auto& tet = d.mesh.tet(t);
-    if (cmx::orient3d(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]], cmx::FilterPolicy{cmx::FilterPolicy::Kind::exact}) !=
-        cmx::Sign::positive)
+    if (cmx::orient3d(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]],
+                      {cmx::FilterPolicy{cmx::FilterPolicy::Kind::exact}, nullptr}) != cmx::Sign::positive)
       return false;
   }
   return true;
@@ -182,7 +182,10 @@ TEST_CASE("bings_house and knotted_hole: positive balls whose interior erodes to
   std::size_t positive = 0;
   for (auto t : house.mesh.live_tets()) {
     const auto& tet = house.mesh.tet(t);
-    positive += cmx::orient3d(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]) == cmx::Sign::positive ? 1 : 0;
+    positive += cmx::orient3d(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]], cmx::PredicateContext::certain()) ==
+                        cmx::Sign::positive
+                    ? 1
+                    : 0;
   }
   CHECK(positive == house.mesh.num_tets());
   CHECK(house.mesh.num_tets() == cmx::topology::bings_house_nobuenoss(4).mesh.num_tets());

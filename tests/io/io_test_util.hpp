@@ -97,7 +97,8 @@ inline TetMeshData grid_mesh(int n) {
   for (auto& t : m.tets) {
     const auto& P = m.positions;
     const auto h = [&](std::uint32_t v) { return HPoint(P[v][0], P[v][1], P[v][2]); };
-    if (orient3d(h(t[0]), h(t[1]), h(t[2]), h(t[3])) == Sign::negative) std::swap(t[2], t[3]);
+    if (orient3d(h(t[0]), h(t[1]), h(t[2]), h(t[3]), PredicateContext::certain()) == Sign::negative)
+      std::swap(t[2], t[3]);
   }
   return m;
 }

@@ -52,7 +52,8 @@ struct Checker {
     ++t.cases;
     ++total;
     const int exact = expected_or_unknown != 2 ? expected_or_unknown : exact_sign(q);
-    const int cascade = int(cmx::orient3d(q.a.data(), q.b.data(), q.c.data(), q.d.data(), {}, &stats));
+    const int cascade =
+        int(cmx::orient3d(q.a.data(), q.b.data(), q.c.data(), q.d.data(), {FilterPolicy{}, &stats}));
     int naive = int(sign_of(naive_det(q)));
     if (naive != exact) ++t.naive_wrong;
     bool ok = cascade == exact;
@@ -69,10 +70,11 @@ struct Checker {
       ++t.hpoint_checked;
       const HPoint a = HPoint::from_doubles(q.a[0], q.a[1], q.a[2]), b = HPoint::from_doubles(q.b[0], q.b[1], q.b[2]);
       const HPoint c = HPoint::from_doubles(q.c[0], q.c[1], q.c[2]), d = HPoint::from_doubles(q.d[0], q.d[1], q.d[2]);
-      ok = ok && int(cmx::orient3d(a, b, c, d)) == exact && int(orient3d_exact(a, b, c, d)) == exact &&
-           int(cmx::orient3d(q.a.data(), q.b.data(), q.c.data(), q.d.data(), *parse_filter_policy("interval"))) ==
-               exact &&
-           int(cmx::orient3d(a, b, c, d, *parse_filter_policy("interval"))) == exact;
+      ok = ok && int(cmx::orient3d(a, b, c, d, cmx::PredicateContext::certain())) == exact &&
+           int(orient3d_exact(a, b, c, d)) == exact &&
+           int(cmx::orient3d(q.a.data(), q.b.data(), q.c.data(), q.d.data(),
+                             {*parse_filter_policy("interval"), nullptr})) == exact &&
+           int(cmx::orient3d(a, b, c, d, {*parse_filter_policy("interval"), nullptr})) == exact;
     }
     if (!ok) {
       if (++t.disagreements <= 5) MESSAGE(std::string(t.name), ": disagreement (exact ", exact, ") on ", hex(q));
@@ -149,8 +151,8 @@ TEST_CASE("differential: cascade == exact (== TetGen) on >= 10^6 double quadrupl
         check(q, grid, true, exact);
         // The same grid through orient2d.
         const double p2[2] = {px, py}, q2[2] = {c.qx, c.qy}, r2[2] = {c.rx, c.ry};
-        if (int(cmx::orient2d(p2, q2, r2)) != exact) ++bad2d;
-        if (int(cmx::orient2d(p2, q2, r2, *parse_filter_policy("naive"))) != exact) ++wrong2d;
+        if (int(cmx::orient2d(p2, q2, r2, cmx::PredicateContext::certain())) != exact) ++bad2d;
+        if (int(cmx::orient2d(p2, q2, r2, {*parse_filter_policy("naive"), nullptr})) != exact) ++wrong2d;
       }
     }
   }
@@ -217,9 +219,9 @@ TEST_CASE("differential: rational points with large W, cascade == exact == mpq d
     const Sign mpq = sign_of(orient3d_det(pa, pb, pc, pd));
     ++cases;
     if (i % 4 == 0) zeros += exact == Sign::zero;
-    if (cmx::orient3d(a, b, c, dp, {}, &stats) != exact || mpq != exact ||
-        cmx::orient3d(a, b, c, dp, mpfr, &stats) != exact ||
-        cmx::orient3d(b, a, c, dp, *parse_filter_policy("interval")) != -exact)
+    if (cmx::orient3d(a, b, c, dp, {FilterPolicy{}, &stats}) != exact || mpq != exact ||
+        cmx::orient3d(a, b, c, dp, {mpfr, &stats}) != exact ||
+        cmx::orient3d(b, a, c, dp, {*parse_filter_policy("interval"), nullptr}) != -exact)
       ++bad;
   }
   MESSAGE(cases, " rational cases (32..256-bit), ", zeros, " exactly coplanar; tiers:\n", stats.report());

@@ -33,8 +33,9 @@ TEST_CASE("the header-only kernel, linked without GMP, gives the GMP build's sig
   long cases = 0, differ = 0;
   cmx::test::for_each_differential_quad(seed, [&](const cmx::test::Quad& q) {
     ++cases;
-    const cmx::Sign s3 = cmx::orient3d(q.a.data(), q.b.data(), q.c.data(), q.d.data(), {}, &stats);
-    const cmx::Sign s2 = cmx::orient2d(q.a.data(), q.b.data(), q.c.data());
+    const cmx::Sign s3 =
+        cmx::orient3d(q.a.data(), q.b.data(), q.c.data(), q.d.data(), {cmx::FilterPolicy{}, &stats});
+    const cmx::Sign s2 = cmx::orient2d(q.a.data(), q.b.data(), q.c.data(), cmx::PredicateContext::certain());
     if (!std::getline(lines, line) || line != std::string{symbol(s3), symbol(s2)}) ++differ;
   });
   MESSAGE(cases, " quadruples; the GMP build's tiers:\n", stats.report());

@@ -70,7 +70,8 @@ TetgenBall tetgen_ball(std::size_t interior_points, std::size_t surface_points, 
     auto& tet = tets[t];
     for (std::size_t k = 0; k < 4; ++k) tet[k] = static_cast<topology::VertexId>(out.tetrahedronlist[4 * t + k]);
     const auto& p = ball.positions;
-    const Sign s = orient3d(p[tet[0]].data(), p[tet[1]].data(), p[tet[2]].data(), p[tet[3]].data());
+    const Sign s = orient3d(p[tet[0]].data(), p[tet[1]].data(), p[tet[2]].data(), p[tet[3]].data(),
+                            PredicateContext::certain());
     if (s == Sign::zero) throw std::runtime_error("tetgen_ball: TetGen returned a flat tet " + std::to_string(t));
     if (s == Sign::negative) {
       std::swap(tet[2], tet[3]);
