@@ -2,13 +2,13 @@
 
 #include <algorithm>
 
-#include "algorithm/expansion/cluster_expander.hpp"
 #include "algorithm/collapse/collapse_pass.hpp"
-#include "algorithm/verify/invariants.hpp"
-#include "algorithm/map_error.hpp"
+#include "algorithm/expansion/cluster_expander.hpp"
 #include "algorithm/expansion/smoothing.hpp"
 #include "algorithm/expansion/subcluster.hpp"
 #include "algorithm/expansion/trace_row.hpp"
+#include "algorithm/map_error.hpp"
+#include "algorithm/verify/invariants.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
 
@@ -297,11 +297,11 @@ void ClusterExpander::trace_row(VertexId v, const HPoint& position, const Placem
   row.vertex = v;
   row.bits = position.bit_size();
   row.cone_rows = placement ? placement->rows : 0;
-  row.lp = !placement                                  ? "none"
-           : placement->info.backend == "float-centre" ? "float-centre"
-           : placement->info.certified                 ? "certified"
-           : placement->info.fell_back                 ? "exact-fallback"
-                                                       : "exact";
+  row.lp = !placement                   ? "none"
+           : placement->at_float_centre ? "float-centre"
+           : placement->info.certified  ? "certified"
+           : placement->info.fell_back  ? "exact-fallback"
+                                        : "exact";
   row.cluster_left = cluster_;
   row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - s_.start).count();
   s_.trace(row);

@@ -1,33 +1,34 @@
 #include "algorithm/expansion/placement.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "algorithm/tuning.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
+#include "lp/backend_registry.hpp"
 #include "lp/few_bit_point.hpp"
 
 namespace cmx::algorithm {
 
+namespace {
+// The option names of the policies (--precision), one table for parsing and printing.
+constexpr std::pair<PrecisionPolicy, std::string_view> precision_policy_names[] = {
+    {PrecisionPolicy::none, "none"},
+    {PrecisionPolicy::dyadic, "dyadic"},
+    {PrecisionPolicy::shift, "shift"},
+    {PrecisionPolicy::segment, "segment"}};
+}  // namespace
+
 std::optional<PrecisionPolicy> parse_precision_policy(std::string_view name) {
-  if (name == "none") return PrecisionPolicy::none;
-  if (name == "dyadic") return PrecisionPolicy::dyadic;
-  if (name == "shift") return PrecisionPolicy::shift;
-  if (name == "segment") return PrecisionPolicy::segment;
+  for (const auto& [policy, policy_name] : precision_policy_names)
+    if (policy_name == name) return policy;
   return std::nullopt;
 }
 
 std::string_view to_string(PrecisionPolicy p) {
-  switch (p) {
-    case PrecisionPolicy::none:
-      return "none";
-    case PrecisionPolicy::dyadic:
-      return "dyadic";
-    case PrecisionPolicy::shift:
-      return "shift";
-    case PrecisionPolicy::segment:
-      return "segment";
-  }
+  for (const auto& [policy, policy_name] : precision_policy_names)
+    if (policy == p) return policy_name;
   return "?";
 }
 
@@ -44,7 +45,7 @@ cmx::Point3 to_point3(const HPoint& p) {
 // Dyadic points on the segment from `from` toward `to` (t = 1/2, 1/4, ...), first strictly inside
 // with fewer bits than `cap`; nullopt when none within 64 halvings.
 std::optional<cmx::Point3> segment_point(const std::vector<lp::HalfSpace>& h, const HPoint& from,
-                                        const HPoint& to, std::size_t cap) {
+                                         const HPoint& to, std::size_t cap) {
   const cmx::Point3 a = to_point3(from), b = to_point3(to);
   Rational t(1, 2);
   for (int step = 0; step < 64; ++step, t /= 2) {
@@ -64,7 +65,7 @@ std::optional<cmx::Point3> segment_point(const std::vector<lp::HalfSpace>& h, co
 // star-shapifications that points merely "somewhere inside" cause. Falls back to the plain
 // inside test (with an l1 norm the ball is a cube, still inside).
 std::optional<cmx::Point3> centred_dyadic(const std::vector<lp::HalfSpace>& h, const cmx::Point3& c,
-                                         const Rational& r) {
+                                          const Rational& r) {
   const Rational tol = r / 4;
   auto close = [&](const cmx::Point3& q) {
     for (int i = 0; i < 3; ++i)
@@ -114,9 +115,13 @@ void round_to_arith(const std::vector<lp::HalfSpace>& h, const cmx::Point3& cent
 
 }  // namespace
 
+bool takes_float_shortcuts(const PlacementOptions& options) {
+  return lp::backend_capabilities(options.lp.backend).certifies_float_basis;
+}
+
 FloatConeVerdict guess_cone(const FloatCone& cone, const PlacementOptions& options) {
   FloatConeVerdict out;
-  if (options.lp.backend != "certified") return out;
+  if (!takes_float_shortcuts(options)) return out;
   out.lp = lp::float_chebyshev(cone.rows);
   if (!out.lp.optimal) return out;
   if (out.lp.radius > tuning::cone_open_radius * out.lp.scale)
@@ -135,7 +140,7 @@ bool certified_closed(const Embedding& e, VertexId v, const FloatCone& cone,
 
 std::optional<std::array<double, 3>> float_centre(const FloatCone& cone, const lp::FloatChebyshev& g,
                                                   const PlacementOptions& options) {
-  if (options.lp.backend != "certified" || !options.arith.exact()) return std::nullopt;
+  if (!takes_float_shortcuts(options) || !options.arith.exact()) return std::nullopt;
   if (options.precision != PrecisionPolicy::dyadic && options.precision != PrecisionPolicy::segment)
     return std::nullopt;
   if (!g.optimal || !(g.radius > tuning::cone_open_radius * g.scale)) return std::nullopt;
@@ -166,13 +171,13 @@ std::optional<Placement> place_at_point(const Embedding& e, VertexId v, const st
   out.position = q;
   out.bits = out.centre_bits = lp::point_bits(to_point3(q));
   out.rows = rows;
-  out.info.backend = "float-centre";
+  out.at_float_centre = true;
   return out;
 }
 
 std::optional<Placement> place_at_float_centre(const Embedding& e, VertexId v, const FloatCone& cone,
                                                const PlacementOptions& options) {
-  if (options.lp.backend != "certified") return std::nullopt;
+  if (!takes_float_shortcuts(options)) return std::nullopt;
   const std::optional<std::array<double, 3>> c = float_centre(cone, lp::float_chebyshev(cone.rows), options);
   if (!c) return std::nullopt;
   return place_at_point(e, v, *c);

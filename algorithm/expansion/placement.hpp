@@ -39,12 +39,18 @@ struct Placement {
   std::size_t rows = 0;                   // half-spaces of the LP (the cone's constraints)
   std::size_t unrounded_bits = 0;         // bits of the position before rounding to a non-exact arith
   bool rounded_outside = false;           // that rounding left the cone (validity will be lost)
-  lp::SolveInfo info;
+  bool at_float_centre = false;           // the float simplex's centre, checked exactly: no LP solved
+  lp::SolveInfo info;                     // the LP behind it (empty when at_float_centre)
   bool ok() const { return status == lp::ChebyshevStatus::interior; }
 };
 
+// Whether the float shortcuts below may answer for the LP: only when the backend itself solves in
+// floats and certifies (lp::BackendCapabilities); a reference backend answers every LP. Throws
+// std::invalid_argument for an unknown backend.
+bool takes_float_shortcuts(const PlacementOptions& options);
+
 // What the float simplex alone says about the cone's kernel, for ordering (no certificate,
-// cheap); with the certified backend only (else `unsure`):
+// cheap); only when takes_float_shortcuts (else `unsure`):
 //   open   : radius above tuning::cone_open_radius of the rows' scale: almost surely simply expandable;
 //   closed : at most tuning::cone_closed_radius of it: most likely no interior (certified_closed decides);
 //   unsure : anything else, and float failures.
@@ -64,7 +70,7 @@ FloatConeVerdict guess_cone(const FloatCone& cone, const PlacementOptions& optio
 bool certified_closed(const Embedding& e, VertexId v, const FloatCone& cone, const lp::FloatChebyshev& guess);
 
 // The quick placement of a cone guessed open, for the dyadic and segment policies
-// without witness in an exact run with the certified backend: the float Chebyshev centre of the
+// without witness in an exact run when takes_float_shortcuts: the float Chebyshev centre of the
 // float cone, as doubles, when every float row keeps half the float radius from it (the margin
 // the dyadic policy keeps from the exact centre) and moving v there leaves every tet of its cone
 // positive (exact predicates). No exact LP runs. nullopt: use place_in_cone.
