@@ -3,7 +3,8 @@
 // Input: one half-space per line, 4 exact numbers "a b c d" meaning a x + b y + c z <= d (any
 // syntax of cmx::parse_rational); blank lines and '#' comments are skipped. Output: status,
 // radius and centre as exact p/q and as nearest doubles; with --json exactly one object
-//   {"cmx_version": V, "status": S, "radius": "p/q", "center": ["p/q", "p/q", "p/q"], "center_double": [x, y, z]}
+//   {"cmx_version": V, "status": S, "radius": "p/q", "center": ["p/q", "p/q", "p/q"], "center_double": [x, y,
+//   z]}
 // with S one of interior, empty_interior, infeasible, unbounded. For infeasible and unbounded,
 // radius, center and center_double are null (there is no centre). A double that overflows is
 // printed as null in JSON and as inf in text.
@@ -14,7 +15,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <sstream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,7 @@
 #include "cli/files.hpp"
 #include "cli/json.hpp"
 #include "cli/messages.hpp"
+#include "cli/number_lines.hpp"
 #include "cli/option_values.hpp"
 #include "cmx_version.hpp"
 #include "lp/backend_registry.hpp"
@@ -35,7 +37,8 @@ namespace cmx::cli {
 namespace {
 
 const HelpText help = {
-    "usage: cmx chebyshev [--lp certified|exact|glpk] [--norm l2-upper|l1] [--weight-bits N] [--json] [FILE | -]\n",
+    "usage: cmx chebyshev [--lp certified|exact|glpk] [--norm l2-upper|l1] [--weight-bits N] [--json] [FILE "
+    "| -]\n",
     "Reads half-spaces 'a b c d' (a x + b y + c z <= d, exact numbers) from FILE or stdin and prints\n"
     "the Chebyshev centre: status (interior, empty_interior, infeasible, unbounded), radius r and\n"
     "centre, exactly and as nearest doubles. Blank lines and '#' comments are skipped.\n",
@@ -43,61 +46,29 @@ const HelpText help = {
     "3 malformed input ('line N: reason' for every bad line, nothing on stdout) or unreadable FILE;\n"
     "4 the chosen reference backend cannot take the data exactly (GLPK: integers >= 2^53).\n"};
 
-std::vector<std::string> tokens(const std::string& line) {
-  std::istringstream in(line.substr(0, line.find('#')));
-  std::vector<std::string> out;
-  for (std::string t; in >> t;) out.push_back(t);
-  return out;
-}
-
 // Reads every line; on any malformed line reports all of them and returns false.
 bool read_halfspaces(std::istream& in, std::vector<lp::HalfSpace>& out) {
-  bool ok = true;
-  std::string line, why;
-  for (long number = 1; std::getline(in, line); ++number) {
-    const std::vector<std::string> t = tokens(line);
-    if (t.empty()) continue;
-    if (t.size() != 4) {
-      message("line " + std::to_string(number) + ": expected 4 numbers (a b c d), got " + std::to_string(t.size()));
-      ok = false;
-      continue;
-    }
-    Rational q[4];
-    bool line_ok = true;
-    for (int i = 0; i < 4 && line_ok; ++i) {
-      if (auto v = parse_rational(t[std::size_t(i)], &why)) {
-        q[i] = *v;
-      } else {
-        message("line " + std::to_string(number) + ": number " + std::to_string(i + 1) + ": " + why);
-        line_ok = false;
-      }
-    }
-    if (!line_ok) {
-      ok = false;
-      continue;
-    }
+  return read_number_lines(in, 4, "4 numbers (a b c d)", [&](std::span<const Rational> q) {
     out.push_back({q[0], q[1], q[2], q[3]});
-  }
-  if (in.bad()) {
-    message("read error");
-    return false;
-  }
-  return ok;
+  });
 }
 
 void print_result(const lp::ChebyshevResult& r, bool json) {
-  const bool has_center = r.status == lp::ChebyshevStatus::interior || r.status == lp::ChebyshevStatus::empty_interior;
+  const bool has_center =
+      r.status == lp::ChebyshevStatus::interior || r.status == lp::ChebyshevStatus::empty_interior;
   const std::string status(lp::to_string(r.status));
   if (json) {
-    std::printf("{\"cmx_version\": %s, \"status\": \"%s\", ", json_quote(cmx_version).c_str(), status.c_str());
+    std::printf("{\"cmx_version\": %s, \"status\": \"%s\", ", json_quote(cmx_version).c_str(),
+                status.c_str());
     if (!has_center) {
       std::printf("\"radius\": null, \"center\": null, \"center_double\": null}\n");
       return;
     }
-    std::printf("\"radius\": \"%s\", \"center\": [\"%s\", \"%s\", \"%s\"], \"center_double\": [%s, %s, %s]}\n",
-                to_string(r.radius).c_str(), to_string(r.center[0]).c_str(), to_string(r.center[1]).c_str(),
-                to_string(r.center[2]).c_str(), json_number(to_double(r.center[0])).c_str(),
-                json_number(to_double(r.center[1])).c_str(), json_number(to_double(r.center[2])).c_str());
+    std::printf(
+        "\"radius\": \"%s\", \"center\": [\"%s\", \"%s\", \"%s\"], \"center_double\": [%s, %s, %s]}\n",
+        to_string(r.radius).c_str(), to_string(r.center[0]).c_str(), to_string(r.center[1]).c_str(),
+        to_string(r.center[2]).c_str(), json_number(to_double(r.center[0])).c_str(),
+        json_number(to_double(r.center[1])).c_str(), json_number(to_double(r.center[2])).c_str());
     return;
   }
   std::printf("status: %s\n", status.c_str());
@@ -122,9 +93,11 @@ int run(const std::vector<std::string>& args) {
                 "LP backend: certified (default: float simplex + exact certificate),\n"
                 "exact (exact simplex), glpk (GLPK's exact simplex, if built)");
   add_norm_option(app, options.norm, "row weights: l2-upper (default: rigorous upper bound of |n|_2) or l1");
-  add_parsed(app, "--weight-bits", options.weight_bits, [](const std::string& t) { return unsigned(parse_integer(t, 2, 53)); },
-             "significant bits of l2-upper weights, 2..53 (default 53); GLPK needs\n"
-             "integer-scaled data below 2^53, which 24 usually gives")
+  add_parsed(
+      app, "--weight-bits", options.weight_bits,
+      [](const std::string& t) { return unsigned(parse_integer(t, 2, 53)); },
+      "significant bits of l2-upper weights, 2..53 (default 53); GLPK needs\n"
+      "integer-scaled data below 2^53, which 24 usually gives")
       ->type_name("N");
   app.add_flag("--json", json, "one JSON object on stdout (with cmx_version)");
   line.quiet_flag()->description("accepted for uniformity: chebyshev prints only its results");
@@ -148,8 +121,8 @@ int run(const std::vector<std::string>& args) {
   return exit_ok;
 }
 
-[[maybe_unused]] const bool registered =
-    register_command({"chebyshev", "exact Chebyshev centre of half-spaces (lines 'a b c d': ax+by+cz <= d)", &run});
+[[maybe_unused]] const bool registered = register_command(
+    {"chebyshev", "exact Chebyshev centre of half-spaces (lines 'a b c d': ax+by+cz <= d)", &run});
 
 }  // namespace
 }  // namespace cmx::cli

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <sstream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,6 +21,7 @@
 #include "cli/common_options.hpp"
 #include "cli/files.hpp"
 #include "cli/messages.hpp"
+#include "cli/number_lines.hpp"
 #include "kernel/orient.hpp"
 
 namespace cmx::cli {
@@ -67,51 +68,16 @@ int run_demo() {
   return exit_ok;
 }
 
-// Splits off a '#' comment and returns the blank-separated tokens.
-std::vector<std::string> tokens(const std::string& line) {
-  std::istringstream in(line.substr(0, line.find('#')));
-  std::vector<std::string> out;
-  for (std::string t; in >> t;) out.push_back(t);
-  return out;
-}
-
 int answer_lines(std::istream& in, const FilterPolicy& policy, bool show_stats) {
   FilterStats stats;
-  bool bad = false;
-  std::string line, why;
-  for (long number = 1; std::getline(in, line); ++number) {
-    const std::vector<std::string> t = tokens(line);
-    if (t.empty()) continue;
-    if (t.size() != 12) {
-      message("line " + std::to_string(number) + ": expected 12 numbers, got " + std::to_string(t.size()));
-      bad = true;
-      continue;
-    }
-    Rational q[12];
-    bool ok = true;
-    for (int i = 0; i < 12 && ok; ++i) {
-      if (auto v = parse_rational(t[i], &why)) {
-        q[i] = *v;
-      } else {
-        message("line " + std::to_string(number) + ": number " + std::to_string(i + 1) + ": " + why);
-        ok = false;
-      }
-    }
-    if (!ok) {
-      bad = true;
-      continue;
-    }
+  const bool ok = read_number_lines(in, 12, "12 numbers", [&](std::span<const Rational> q) {
     const HPoint a(q[0], q[1], q[2]), b(q[3], q[4], q[5]), c(q[6], q[7], q[8]), d(q[9], q[10], q[11]);
     std::putchar(sign_char(orient3d(a, b, c, d, {policy, &stats})));
     std::putchar('\n');
-  }
+  });
   std::fflush(stdout);
   if (show_stats) std::fprintf(stderr, "%s", stats.report().c_str());
-  if (in.bad()) {
-    message("read error");
-    return exit_bad_input;
-  }
-  return bad ? exit_bad_input : exit_ok;
+  return ok ? exit_ok : exit_bad_input;
 }
 
 int run(const std::vector<std::string>& args) {

@@ -4,6 +4,7 @@
 #include <deque>
 #include <limits>
 #include <unordered_map>
+#include <utility>
 
 #include "algorithm/doubles/decrowd.hpp"
 #include "algorithm/expansion/expansion_cone.hpp"
@@ -14,25 +15,24 @@
 
 namespace cmx::algorithm {
 
+namespace {
+// The option names of the policies (--snap), one table for parsing and printing.
+constexpr std::pair<SnapPolicy, std::string_view> snap_policy_names[] = {
+    {SnapPolicy::none, "none"},
+    {SnapPolicy::nearest, "nearest"},
+    {SnapPolicy::chebyshev_pass, "chebyshev-pass"},
+    {SnapPolicy::repair, "repair"}};
+}  // namespace
+
 std::optional<SnapPolicy> parse_snap_policy(std::string_view name) {
-  if (name == "none") return SnapPolicy::none;
-  if (name == "nearest") return SnapPolicy::nearest;
-  if (name == "chebyshev-pass") return SnapPolicy::chebyshev_pass;
-  if (name == "repair") return SnapPolicy::repair;
+  for (const auto& [policy, policy_name] : snap_policy_names)
+    if (policy_name == name) return policy;
   return std::nullopt;
 }
 
 std::string_view to_string(SnapPolicy p) {
-  switch (p) {
-    case SnapPolicy::none:
-      return "none";
-    case SnapPolicy::nearest:
-      return "nearest";
-    case SnapPolicy::chebyshev_pass:
-      return "chebyshev-pass";
-    case SnapPolicy::repair:
-      return "repair";
-  }
+  for (const auto& [policy, policy_name] : snap_policy_names)
+    if (policy == p) return policy_name;
   return "?";
 }
 

@@ -1,12 +1,16 @@
 // cmx._cmx.map_doubles / map_exact: cmx::map_to_domain with the GIL released, options from a
 // dict, the progress callback and Ctrl-C served on the calling thread, and the result object.
+#include "cmx/map.hpp"
+
 #include <atomic>
 #include <chrono>
+#include <initializer_list>
 #include <memory>
 #include <optional>
+#include <string_view>
 #include <thread>
+#include <utility>
 
-#include "cmx/map.hpp"
 #include "python/src/common.hpp"
 
 namespace cmx::python {
@@ -30,7 +34,8 @@ T option_value(const char* name, py::handle value, const char* expected) {
 }
 
 std::size_t count_option(const char* name, py::handle value) {
-  if (py::isinstance<py::bool_>(value) || !py::isinstance<py::int_>(value) || value.cast<py::int_>() < py::int_(0))
+  if (py::isinstance<py::bool_>(value) || !py::isinstance<py::int_>(value) ||
+      value.cast<py::int_>() < py::int_(0))
     throw InvalidOptionsError(std::string("option ") + name + ": expected a non-negative integer, got " +
                               py::repr(value).cast<std::string>());
   return option_value<std::size_t>(name, value, "a non-negative integer");
@@ -59,6 +64,36 @@ InitialMap init_option(py::handle value) {
   throw InvalidOptionsError("option init: '" + s + "' is not an initial map (auto, shrink, tutte, given)");
 }
 
+// The keywords that set one MapOptions field of a plain type, by the field's type.
+template <class T>
+using Fields = std::initializer_list<std::pair<std::string_view, T MapOptions::*>>;
+const Fields<std::size_t> count_fields = {{"threads", &MapOptions::threads},
+                                          {"subclusters", &MapOptions::subclusters},
+                                          {"smooth", &MapOptions::smooth}};
+const Fields<bool> bool_fields = {{"collapse", &MapOptions::collapse}, {"check", &MapOptions::check}};
+const Fields<std::string> text_fields = {
+    {"snap", &MapOptions::snap},  {"order", &MapOptions::order}, {"filter", &MapOptions::filter},
+    {"lp", &MapOptions::lp},      {"norm", &MapOptions::norm},   {"precision", &MapOptions::precision},
+    {"arith", &MapOptions::arith}};
+
+template <class T, class Parse>
+bool set_field(const Fields<T>& fields, MapOptions& o, const std::string& name, py::handle value,
+               Parse parse) {
+  for (const auto& [keyword, field] : fields)
+    if (keyword == name) {
+      o.*field = parse(name.c_str(), value);
+      return true;
+    }
+  return false;
+}
+
+// Sets the plain field `name`; false when no such keyword.
+bool set_named_field(MapOptions& o, const std::string& name, py::handle value) {
+  return set_field(count_fields, o, name, value, count_option) ||
+         set_field(bool_fields, o, name, value, bool_option) ||
+         set_field(text_fields, o, name, value, text_option);
+}
+
 // The MapOptions fields named by the keywords of `options`; an unknown keyword is a TypeError.
 MapOptions map_options(const py::dict& options) {
   MapOptions o;
@@ -70,40 +105,18 @@ MapOptions map_options(const py::dict& options) {
     } else if (name == "initial_target") {
       o.initial_target = option_value<std::vector<ExactPoint3>>(n, value, "exact points as text");
     } else if (name == "initial_target_doubles") {
-      o.initial_target_doubles = points_of(option_value<DoubleArray>(n, value, "an (n, 3) array"), "initial_target");
+      o.initial_target_doubles =
+          points_of(option_value<DoubleArray>(n, value, "an (n, 3) array"), "initial_target");
     } else if (name == "time_limit" || name == "time_limit_seconds") {
-      if (py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)))
+      if (py::isinstance<py::bool_>(value) ||
+          !(py::isinstance<py::float_>(value) || py::isinstance<py::int_>(value)))
         throw InvalidOptionsError("option time_limit: expected a number of seconds, got " +
                                   py::repr(value).cast<std::string>());
       o.time_limit_seconds = value.cast<double>();
       if (!(o.time_limit_seconds >= 0))
         throw InvalidOptionsError("option time_limit: " + py::repr(value).cast<std::string>() +
                                   " is negative or NaN (0: no limit)");
-    } else if (name == "threads") {
-      o.threads = count_option(n, value);
-    } else if (name == "subclusters") {
-      o.subclusters = count_option(n, value);
-    } else if (name == "smooth") {
-      o.smooth = count_option(n, value);
-    } else if (name == "collapse") {
-      o.collapse = bool_option(n, value);
-    } else if (name == "check") {
-      o.check = bool_option(n, value);
-    } else if (name == "snap") {
-      o.snap = text_option(n, value);
-    } else if (name == "order") {
-      o.order = text_option(n, value);
-    } else if (name == "filter") {
-      o.filter = text_option(n, value);
-    } else if (name == "lp") {
-      o.lp = text_option(n, value);
-    } else if (name == "norm") {
-      o.norm = text_option(n, value);
-    } else if (name == "precision") {
-      o.precision = text_option(n, value);
-    } else if (name == "arith") {
-      o.arith = text_option(n, value);
-    } else {
+    } else if (!set_named_field(o, name, value)) {
       throw py::type_error("map() got an unexpected keyword argument '" + name + "'");
     }
   }
@@ -149,7 +162,8 @@ class RunHooks {
     py::gil_scoped_acquire gil;
     last_check_ = std::chrono::steady_clock::now();
     if (check_signals() || progress_.is_none()) return;
-    Progress copy{std::string(p.phase), p.done, p.total, p.expanded, p.remaining, p.added_vertices, p.max_bits, p.seconds};
+    Progress copy{std::string(p.phase), p.done,           p.total,    p.expanded,
+                  p.remaining,          p.added_vertices, p.max_bits, p.seconds};
     try {
       if (py::object answer = progress_(copy); answer.ptr() == Py_True) stopped_ = true;
     } catch (py::error_already_set& e) {
@@ -192,7 +206,8 @@ MapResult run_map(const py::dict& options, py::object progress, Run run) {
 }  // namespace
 
 void bind_map(py::module_& m) {
-  py::class_<Progress>(m, "Progress", "What the progress callback of cmx.map gets, about five times a second.")
+  py::class_<Progress>(m, "Progress",
+                       "What the progress callback of cmx.map gets, about five times a second.")
       .def_readonly("phase", &Progress::phase,
                     "'expansion', 'collapse', 'doubles', 'verification' or 'shelling search'")
       .def_readonly("done", &Progress::done, "steps done of total (phases other than the expansion)")
@@ -203,9 +218,9 @@ void bind_map(py::module_& m) {
       .def_readonly("max_bits", &Progress::max_bits, "largest coordinate bit size so far")
       .def_readonly("seconds", &Progress::seconds, "seconds since the start")
       .def("__repr__", [](const Progress& p) {
-        return "Progress(phase='" + p.phase + "', done=" + std::to_string(p.done) + ", total=" +
-               std::to_string(p.total) + ", expanded=" + std::to_string(p.expanded) + ", remaining=" +
-               std::to_string(p.remaining) + ", seconds=" + std::to_string(p.seconds) + ")";
+        return "Progress(phase='" + p.phase + "', done=" + std::to_string(p.done) +
+               ", total=" + std::to_string(p.total) + ", expanded=" + std::to_string(p.expanded) +
+               ", remaining=" + std::to_string(p.remaining) + ", seconds=" + std::to_string(p.seconds) + ")";
       });
 
   py::class_<MapResult>(m, "MapResult", "cmx::MapResult (wrapped by cmx.Result)")
@@ -224,12 +239,13 @@ void bind_map(py::module_& m) {
       .def_property_readonly("target", [](const MapResult& r) { return array_of(r.target); })
       .def_property_readonly("source_exact", [](const MapResult& r) { return text_rows(r.source_exact); })
       .def_property_readonly("target_exact", [](const MapResult& r) { return text_rows(r.target_exact); })
-      .def_property_readonly("target_homogeneous", [](const MapResult& r) { return text_rows(r.target_homogeneous); });
+      .def_property_readonly("target_homogeneous",
+                             [](const MapResult& r) { return text_rows(r.target_homogeneous); });
 
   m.def(
       "map_doubles",
-      [](const DoubleArray& vertices, const IndexArray& tets, const IndexArray& ids, const DoubleArray& positions,
-         const py::dict& options, py::object progress) {
+      [](const DoubleArray& vertices, const IndexArray& tets, const IndexArray& ids,
+         const DoubleArray& positions, const py::dict& options, py::object progress) {
         const std::vector<Point3d> v = points_of(vertices, "V");
         const std::vector<Tet> t = tets_of(tets, "T");
         const std::vector<std::uint32_t> b = indices_of(ids, "boundary ids");
@@ -237,7 +253,8 @@ void bind_map(py::module_& m) {
         return run_map(options, std::move(progress),
                        [&](const MapOptions& o) { return map_to_domain(v, t, b, p, o); });
       },
-      py::arg("V"), py::arg("T"), py::arg("ids"), py::arg("positions"), py::arg("options"), py::arg("progress"));
+      py::arg("V"), py::arg("T"), py::arg("ids"), py::arg("positions"), py::arg("options"),
+      py::arg("progress"));
   m.def(
       "map_exact",
       [](const std::vector<ExactPoint3>& v, const IndexArray& tets, const IndexArray& ids,
@@ -247,7 +264,8 @@ void bind_map(py::module_& m) {
         return run_map(options, std::move(progress),
                        [&](const MapOptions& o) { return map_to_domain(v, t, b, p, o); });
       },
-      py::arg("V"), py::arg("T"), py::arg("ids"), py::arg("positions"), py::arg("options"), py::arg("progress"));
+      py::arg("V"), py::arg("T"), py::arg("ids"), py::arg("positions"), py::arg("options"),
+      py::arg("progress"));
 
   m.def(
       "boundary_vertices",
