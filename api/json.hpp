@@ -1,7 +1,8 @@
 #pragma once
-// A small JSON text builder for the reports of cmx::map_to_domain and the CLI: objects with keys
-// in insertion order, strings escaped, doubles printed round-trip (non-finite as null). Exact
-// rationals go in as strings.
+// The JSON text builder of the reports of cmx::map_to_domain and the CLI: objects with keys in
+// insertion order and the reports' fixed layout, strings escaped by nlohmann-json (api/json.cpp),
+// doubles printed with 17 significant digits (round-trip; non-finite as null). Exact rationals go
+// in as strings.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -10,23 +11,9 @@
 
 namespace cmx::api {
 
-inline std::string json_quote(const std::string& text) {
-  std::string out = "\"";
-  for (unsigned char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += char(c);
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += char(c);
-    }
-  }
-  out += '"';
-  return out;
-}
+// `text` as a JSON string (nlohmann-json's escaping; bytes that are not UTF-8 become U+FFFD, so
+// the output is always valid JSON).
+std::string json_quote(const std::string& text);
 
 inline std::string json_number(double x) {
   if (!std::isfinite(x)) return "null";

@@ -9,6 +9,7 @@ packages=(
   libgmp-dev libmpfr-dev libboost-dev   # the core library: GMP, MPFR, Boost headers
   doctest-dev                           # tests
   libcli11-dev                          # the cmx program's command lines (header-only)
+  nlohmann-json3-dev                    # api/: JSON string escaping of the reports (header-only)
   libeigen3-dev                         # algorithm/: sparse solver of the Tutte initial map (header-only)
   libglpk-dev                           # reference LP backend (tests, fuzz, bench only)
   libtet1.5-dev                         # TetGen's copy of Shewchuk's predicates (oracle only)
