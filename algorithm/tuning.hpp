@@ -36,4 +36,10 @@ inline constexpr std::size_t double_repair_rounds = 16;
 // many rounds it splits every chord at once (the predecessor's configuration, which ends surely).
 inline constexpr int preprocess_rounds_before_split_all = 8;
 
+// Bends of one star-shapification (refinement/local_refinement.cpp, bend_and_expand): each
+// blocker is bent at most twice, so two per base vertex, and a few more for blockers of the side
+// constraints that are not base vertices; beyond that the bends are undone and pushes are tried.
+inline constexpr std::size_t bends_per_base_vertex = 2;
+inline constexpr std::size_t bends_beyond_base = 8;
+
 }  // namespace cmx::algorithm::tuning

@@ -3,11 +3,23 @@
 // pushes and bends, inflation with cluster isolation).
 #include <algorithm>
 #include <tuple>
+#include <unordered_map>
 
 #include "algorithm/expansion/cluster_expander.hpp"
+#include "algorithm/tuning.hpp"
 #include "topology/complex_queries.hpp"
 
 namespace cmx::algorithm::detail {
+namespace {
+
+// Distance of b from the witness in base edges; a vertex the witness does not reach counts as
+// farther than any reached one (a base has far fewer than 2^20 vertices).
+int witness_distance(const std::unordered_map<VertexId, int>& dist, VertexId b) {
+  const auto it = dist.find(b);
+  return it == dist.end() ? 1 << 20 : it->second;
+}
+
+}  // namespace
 
 // Expands cluster vertex v now if it can be done: simply; after re-centring its base; by
 // inflation of dangling base edges; by star-shapification. Each step keeps every invariant.
@@ -119,7 +131,7 @@ bool ClusterExpander::bend_and_expand(VertexId v, int k) {
   auto undo_virtual = [&] {
     for (auto it = bends.rbegin(); it != bends.rend(); ++it) e_.target[it->b] = it->original;
   };
-  const std::size_t cap = 2 * base.verts.size() + 8;
+  const std::size_t cap = tuning::bends_per_base_vertex * base.verts.size() + tuning::bends_beyond_base;
   Placement p;
   for (;;) {
     p = place(gather_expansion_cone(e_, v), &w);
@@ -192,7 +204,7 @@ std::optional<VertexId> ClusterExpander::choose_push(VertexId v, VertexId w,
         !is_pushable(e_, v, b))
       continue;
     const std::tuple<int, int, int, int, VertexId> key{is_ear(e_, v, b) ? 0 : 1, -blocks[b],
-                                                       -(dist.count(b) ? dist[b] : 1 << 20), base.tets[b], b};
+                                                       -witness_distance(dist, b), base.tets[b], b};
     if (!best || key < best_key) {
       best = b;
       best_key = key;
@@ -245,7 +257,7 @@ bool ClusterExpander::push_until_star_shaped(VertexId v, int k) {
     for (VertexId b : base.verts) {
       if (std::find(keep.begin(), keep.end(), b) != keep.end() || base.tets[b] == 0 || !is_pushable(e_, v, b))
         continue;
-      const std::tuple<int, int, VertexId> key{-(dist.count(b) ? dist[b] : 1 << 20), base.tets[b], b};
+      const std::tuple<int, int, VertexId> key{-witness_distance(dist, b), base.tets[b], b};
       if (!best || key < best_key) best = b, best_key = key;
     }
     if (!best) return false;

@@ -203,9 +203,7 @@ MapResult run_map(const py::dict& options, py::object progress, Run run) {
   return r;
 }
 
-}  // namespace
-
-void bind_map(py::module_& m) {
+void bind_result_types(py::module_& m) {
   py::class_<Progress>(m, "Progress",
                        "What the progress callback of cmx.map gets, about five times a second.")
       .def_readonly("phase", &Progress::phase,
@@ -241,7 +239,9 @@ void bind_map(py::module_& m) {
       .def_property_readonly("target_exact", [](const MapResult& r) { return text_rows(r.target_exact); })
       .def_property_readonly("target_homogeneous",
                              [](const MapResult& r) { return text_rows(r.target_homogeneous); });
+}
 
+void bind_map_calls(py::module_& m) {
   m.def(
       "map_doubles",
       [](const DoubleArray& vertices, const IndexArray& tets, const IndexArray& ids,
@@ -266,7 +266,9 @@ void bind_map(py::module_& m) {
       },
       py::arg("V"), py::arg("T"), py::arg("ids"), py::arg("positions"), py::arg("options"),
       py::arg("progress"));
+}
 
+void bind_boundary_helpers(py::module_& m) {
   m.def(
       "boundary_vertices",
       [](const IndexArray& tets, std::size_t vertex_count) {
@@ -286,6 +288,14 @@ void bind_map(py::module_& m) {
         return py::make_tuple(array_of(b.ids), array_of(b.positions));
       },
       py::arg("V"), py::arg("T"), py::arg("shape"));
+}
+
+}  // namespace
+
+void bind_map(py::module_& m) {
+  bind_result_types(m);
+  bind_map_calls(m);
+  bind_boundary_helpers(m);
 }
 
 }  // namespace cmx::python

@@ -124,20 +124,28 @@ TEST_CASE("the Chebyshev pass keeps the exact map valid and the result determini
   CHECK(a.doubles.target == b.doubles.target);
 }
 
-TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair separates them") {
+namespace {
+
+// A valid exact map of a perturbed grid onto a sphere in which one interior vertex sits within
+// 2^-80 of a boundary neighbour (on the segment between them, still strictly inside its star's
+// kernel, checked exactly): its nearest double is the neighbour's, so rounding flattens tets.
+struct CrowdedMap {
+  MapResult exact;  // the map before the move
+  Embedding e;      // with the crowded vertex
+};
+
+CrowdedMap crowded_map() {
   const MapProblem p = problem_from(perturbed_grid(3, 3, 3, 3), "sphere");
   MapOptions o;
   o.snap = SnapPolicy::none;
-  const MapResult r = map_checked(p, o);
-
-  Embedding e;
+  CrowdedMap out{map_checked(p, o), {}};
+  const MapResult& r = out.exact;
+  Embedding& e = out.e;
   e.mesh = topology::TetMesh(r.target.size(), r.tets);
   e.source = r.source;
   e.target = r.target;
   e.unexpanded.assign(r.target.size(), 0);
   e.boundary = topology::boundary_vertex_flags(e.mesh);
-  // Move one interior vertex v to within 2^-80 of the way to a neighbour a (on the segment from
-  // v to a, still strictly inside v's star kernel, checked exactly): its nearest double is a's.
   bool crowded = false;
   for (VertexId v = 0; v < e.num_vertices() && !crowded; ++v) {
     if (e.boundary[v]) continue;
@@ -160,14 +168,24 @@ TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair
     }
   }
   REQUIRE(crowded);
-  Embedding rounded = e;
-  const DoubleMap plain = make_double_map(rounded, SnapPolicy::nearest, {});
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a map crowded below double resolution: plain rounding flattens tets") {
+  CrowdedMap m = crowded_map();
+  const DoubleMap plain = make_double_map(m.e, SnapPolicy::nearest, {});
   REQUIRE_FALSE(plain.check.valid());
   CHECK(plain.check.degenerate > 0);
   CHECK_FALSE(plain.stopped_at_deadline);
+}
 
-  // A time limit already passed: no move is made, the doubles are checked as they stand.
-  Embedding late = e;
+TEST_CASE("a crowded map with a time limit already passed: doubles checked as they stand") {
+  const CrowdedMap m = crowded_map();
+  Embedding rounded = m.e;
+  const DoubleMap plain = make_double_map(rounded, SnapPolicy::nearest, {});
+  Embedding late = m.e;
   MapOptions past;
   past.time_limit_seconds = 1e-9;
   RunControl control(past, std::chrono::steady_clock::now() - std::chrono::seconds(1));
@@ -176,10 +194,16 @@ TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair
   CHECK(stopped.chebyshev_moves == 0);
   CHECK(stopped.check.degenerate == plain.check.degenerate);
   CHECK(stopped.target == plain.target);
-  CHECK(late.target == e.target);
+  CHECK(late.target == m.e.target);
+}
 
-  // Stopped at any poll of the repair: the exact map stays valid, and the doubles are the valid
-  // doubles of a finished repair or the plain rounding of the exact map as it was.
+// Stopped at any poll of the repair: the exact map stays valid, and the doubles are the valid
+// doubles of a finished repair or the plain rounding of the exact map as it was.
+TEST_CASE("a crowded map's repair stopped at any poll keeps the exact map valid") {
+  const CrowdedMap m = crowded_map();
+  const Embedding& e = m.e;
+  Embedding rounded = e;
+  const DoubleMap plain = make_double_map(rounded, SnapPolicy::nearest, {});
   std::size_t polls = 0;
   {
     MapOptions counting;
@@ -207,7 +231,12 @@ TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair
     CHECK(d.target == plain.target);
     CHECK(copy.target == e.target);
   }
+}
 
+TEST_CASE("a crowded map's repair separates the flattened tets and keeps the exact map valid") {
+  CrowdedMap m = crowded_map();
+  Embedding& e = m.e;
+  const MapResult& r = m.exact;
   const DoubleMap mended = make_double_map(e, SnapPolicy::repair, {});
   CHECK(mended.check.valid());
   CHECK_FALSE(mended.stopped_at_deadline);
@@ -218,18 +247,24 @@ TEST_CASE("a map crowded below double resolution: rounding flattens tets, repair
     if (e.boundary[v]) CHECK(e.target[v] == r.target[v]);
 }
 
-TEST_CASE("repair rounds a boundary vertex to another double within one ulp when the nearest flattens an all-boundary tet") {
+TEST_CASE(
+    "repair rounds a boundary vertex to another double within one ulp when the nearest flattens an "
+    "all-boundary tet") {
   // One tet, all four vertices prescribed: a flat but positive tet whose apex height 2^-60 above
   // z = 1 is not a double. The nearest doubles put the apex at z = 1 (flat); the double on the
   // exact value's other side, 1 + 2^-52, keeps it positive. No interior vertex can help.
   MapProblem p;
   p.tets = {{0, 1, 2, 3}};
-  p.source = {{Rational(0), Rational(0), Rational(0)}, {Rational(1), Rational(0), Rational(0)},
-              {Rational(0), Rational(1), Rational(0)}, {Rational(0), Rational(0), Rational(1)}};
+  p.source = {{Rational(0), Rational(0), Rational(0)},
+              {Rational(1), Rational(0), Rational(0)},
+              {Rational(0), Rational(1), Rational(0)},
+              {Rational(0), Rational(0), Rational(1)}};
   p.boundary_vertices = {0, 1, 2, 3};
   const Rational apex_z = Rational(1) + rational_from_double(std::ldexp(1.0, -60));
-  p.boundary_positions = {{Rational(0), Rational(0), Rational(1)}, {Rational(1), Rational(0), Rational(1)},
-                          {Rational(0), Rational(1), Rational(1)}, {Rational(1, 3), Rational(1, 3), apex_z}};
+  p.boundary_positions = {{Rational(0), Rational(0), Rational(1)},
+                          {Rational(1), Rational(0), Rational(1)},
+                          {Rational(0), Rational(1), Rational(1)},
+                          {Rational(1, 3), Rational(1, 3), apex_z}};
   MapOptions nearest;
   nearest.snap = SnapPolicy::nearest;
   const MapResult plain = map_checked(p, nearest);

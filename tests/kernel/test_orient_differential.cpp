@@ -68,8 +68,10 @@ struct Checker {
     // A sample also goes through HPoints (GMP) and the other exact policies.
     if (total % 97 == 0) {
       ++t.hpoint_checked;
-      const HPoint a = HPoint::from_doubles(q.a[0], q.a[1], q.a[2]), b = HPoint::from_doubles(q.b[0], q.b[1], q.b[2]);
-      const HPoint c = HPoint::from_doubles(q.c[0], q.c[1], q.c[2]), d = HPoint::from_doubles(q.d[0], q.d[1], q.d[2]);
+      const HPoint a = HPoint::from_doubles(q.a[0], q.a[1], q.a[2]),
+                   b = HPoint::from_doubles(q.b[0], q.b[1], q.b[2]);
+      const HPoint c = HPoint::from_doubles(q.c[0], q.c[1], q.c[2]),
+                   d = HPoint::from_doubles(q.d[0], q.d[1], q.d[2]);
       ok = ok && int(cmx::orient3d(a, b, c, d, cmx::PredicateContext::certain())) == exact &&
            int(orient3d_exact(a, b, c, d)) == exact &&
            int(cmx::orient3d(q.a.data(), q.b.data(), q.c.data(), q.d.data(),
@@ -77,26 +79,21 @@ struct Checker {
            int(cmx::orient3d(a, b, c, d, {*parse_filter_policy("interval"), nullptr})) == exact;
     }
     if (!ok) {
-      if (++t.disagreements <= 5) MESSAGE(std::string(t.name), ": disagreement (exact ", exact, ") on ", hex(q));
+      if (++t.disagreements <= 5)
+        MESSAGE(std::string(t.name), ": disagreement (exact ", exact, ") on ", hex(q));
     }
   }
 };
 
 void report(const Tally& t) {
   MESSAGE(std::string(t.name), ": ", t.cases, " cases, naive wrong ", t.naive_wrong, " (",
-          100.0 * double(t.naive_wrong) / double(t.cases ? t.cases : 1), " %), TetGen-checked ", t.tetgen_checked,
-          ", via HPoint ", t.hpoint_checked, ", disagreements ", t.disagreements);
+          100.0 * double(t.naive_wrong) / double(t.cases ? t.cases : 1), " %), TetGen-checked ",
+          t.tetgen_checked, ", via HPoint ", t.hpoint_checked, ", disagreements ", t.disagreements);
   CHECK_MESSAGE(t.disagreements == 0, std::string(t.name));
 }
 
-}  // namespace
-
-TEST_CASE("differential: cascade == exact (== TetGen) on >= 10^6 double quadruples") {
-  const std::uint64_t seed = test_seed();
-  MESSAGE("seed ", std::to_string(seed), " (set CMX_TEST_SEED to replay); scale 1/", scale_down);
-  Rng rng(seed);
-  Checker check;
-
+// Random quadruples: uniform, rounded onto a plane, moved off it by ulps, exactly coplanar.
+void check_random_families(Rng& rng, Checker& check) {
   Tally uniform{"uniform random in [-1,1)^3"};
   for (int i = 0; i < 200000 / scale_down; ++i) {
     Quad q;
@@ -127,17 +124,18 @@ TEST_CASE("differential: cascade == exact (== TetGen) on >= 10^6 double quadrupl
     check(q, zero, true, 0);
   }
   report(zero);
+}
 
-  // Kettner et al. 2004: p steps over a 256x256 grid of successive doubles; q, r fixed; lifted to
-  // 3D with the apex (0, 0, 1), where orient3d equals the 2D orientation of (p, q, r).
+// Kettner et al. 2004: p steps over a 256x256 grid of successive doubles; q, r fixed; lifted to
+// 3D with the apex (0, 0, 1), where orient3d equals the 2D orientation of (p, q, r).
+void check_kettner_grids(Checker& check) {
   struct Config {
     double px, py, qx, qy, rx, ry;
   };
-  const Config configs[3] = {
-      {0.5, 0.5, 12, 12, 24, 24},
-      {0.50000000000002531, 0.5000000000000171, 17.300000000000001, 17.300000000000001, 24.00000000000005,
-       24.0000000000000517765},
-      {0.5, 0.5, 8.8000000000000007, 8.8000000000000007, 12.1, 12.1}};
+  const Config configs[3] = {{0.5, 0.5, 12, 12, 24, 24},
+                             {0.50000000000002531, 0.5000000000000171, 17.300000000000001, 17.300000000000001,
+                              24.00000000000005, 24.0000000000000517765},
+                             {0.5, 0.5, 8.8000000000000007, 8.8000000000000007, 12.1, 12.1}};
   Tally grid{"Kettner 256x256 ulp grids lifted to 3D"};
   long wrong2d = 0, bad2d = 0;
   const int side = scale_down == 1 ? 256 : 64;
@@ -160,10 +158,12 @@ TEST_CASE("differential: cascade == exact (== TetGen) on >= 10^6 double quadrupl
   MESSAGE("orient2d on the same grids: naive wrong ", wrong2d, ", cascade disagreements ", bad2d);
   CHECK(bad2d == 0);
   CHECK(grid.naive_wrong > 0);  // measured 42 086 of 196 608 (11 972 + 19 776 + 10 338)
+}
 
-  // Tiny and huge magnitudes, inside and beyond the filter guards (1e-97/1e102) and the adaptive
-  // range (2^-250..2^250), up to about 1e-300 and 1e300. TetGen is only valid without
-  // under/overflow, so it is consulted for |exponent| <= 200.
+// Tiny and huge magnitudes, inside and beyond the filter guards (1e-97/1e102) and the adaptive
+// range (2^-250..2^250), up to about 1e-300 and 1e300. TetGen is only valid without
+// under/overflow, so it is consulted for |exponent| <= 200.
+void check_extreme_magnitudes(Rng& rng, Checker& check) {
   Tally extreme{"scaled by 2^k, k in [-996, 996]"};
   const int exponents[] = {-996, -700, -330, -250, -200, 200, 250, 330, 700, 996};
   for (int e : exponents)
@@ -173,7 +173,18 @@ TEST_CASE("differential: cascade == exact (== TetGen) on >= 10^6 double quadrupl
       check(scaled(q, e), extreme, e >= -200 && e <= 200);
     }
   report(extreme);
+}
 
+}  // namespace
+
+TEST_CASE("differential: cascade == exact (== TetGen) on >= 10^6 double quadruples") {
+  const std::uint64_t seed = test_seed();
+  MESSAGE("seed ", std::to_string(seed), " (set CMX_TEST_SEED to replay); scale 1/", scale_down);
+  Rng rng(seed);
+  Checker check;
+  check_random_families(rng, check);
+  check_kettner_grids(check);
+  check_extreme_magnitudes(rng, check);
   MESSAGE("total ", check.total, " quadruples; cascade tiers:\n", check.stats.report());
   if (scale_down == 1) CHECK(check.total >= 1000000);
 }
@@ -201,13 +212,15 @@ TEST_CASE("differential: rational points with large W, cascade == exact == mpq d
   FilterStats stats;
   for (int i = 0; i < 6000 / scale_down; ++i) {
     const int bits = 32 << ((i / 4) % 4);  // 32 .. 256-bit numerators and denominators
-    const HPoint a(rational(bits), rational(bits), rational(bits)), b(rational(bits), rational(bits), rational(bits));
+    const HPoint a(rational(bits), rational(bits), rational(bits)),
+        b(rational(bits), rational(bits), rational(bits));
     const HPoint c(rational(bits), rational(bits), rational(bits));
     const Rational s = rational(bits), t = rational(bits);
     // Mode i % 4: 0 on the plane abc, 1 and 2 off it by 2^-200 and 2^-60, 3 a random point.
     Rational d[3];
     for (int k = 0; k < 3; ++k) {
-      d[k] = a.coordinate(k) + s * (b.coordinate(k) - a.coordinate(k)) + t * (c.coordinate(k) - a.coordinate(k));
+      d[k] =
+          a.coordinate(k) + s * (b.coordinate(k) - a.coordinate(k)) + t * (c.coordinate(k) - a.coordinate(k));
       if (i % 4 == 1) d[k] += Rational(1, 1) / (Integer(1) << 200);
       if (i % 4 == 2 && k == 2) d[k] += Rational(1, 1) / (Integer(1) << 60);
       if (i % 4 == 3) d[k] = rational(bits);
@@ -215,7 +228,8 @@ TEST_CASE("differential: rational points with large W, cascade == exact == mpq d
     const HPoint dp(d[0], d[1], d[2]);
     const Sign exact = orient3d_exact(a, b, c, dp);
     Rational pa[3], pb[3], pc[3], pd[3];
-    for (int k = 0; k < 3; ++k) pa[k] = a.coordinate(k), pb[k] = b.coordinate(k), pc[k] = c.coordinate(k), pd[k] = d[k];
+    for (int k = 0; k < 3; ++k)
+      pa[k] = a.coordinate(k), pb[k] = b.coordinate(k), pc[k] = c.coordinate(k), pd[k] = d[k];
     const Sign mpq = sign_of(orient3d_det(pa, pb, pc, pd));
     ++cases;
     if (i % 4 == 0) zeros += exact == Sign::zero;
