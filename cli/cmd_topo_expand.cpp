@@ -29,7 +29,6 @@
 #include "topology/ball_check.hpp"
 #include "topology/chords.hpp"
 #include "topology/complex_queries.hpp"
-#include "topology/mesh_edits.hpp"
 #include "topology/generators.hpp"
 #include "topology/nobuenoss.hpp"
 #include "topology/topological_expansion.hpp"
@@ -59,17 +58,9 @@ struct Input {
 
 // The chord splits of topology/chords.hpp on the mesh itself, as cmx map's preprocessing does.
 std::vector<char> simply_connected_interior(Input& in) {
-  std::vector<char> boundary = topology::boundary_vertex_flags(in.mesh);
-  std::vector<char> interior = topology::interior_vertex_flags(in.mesh);
-  topology::ChordContext c{in.mesh, boundary, interior, [&](topology::VertexId a, topology::VertexId b, topology::VertexId f) {
-                             const topology::SplitResult r = f == topology::invalid_index ? topology::split_edge(in.mesh, a, b)
-                                                                                          : topology::split_face(in.mesh, a, b, f);
-                             boundary.push_back(0);
-                             interior.push_back(1);
-                             return r.new_vertex;
-                           }};
-  in.chord_splits = topology::make_interior_simply_connected(c);
-  return interior;
+  topology::ChordSplits c = topology::make_interior_simply_connected(in.mesh);
+  in.chord_splits = c.splits;
+  return std::move(c.interior);
 }
 
 // "NX,NY,NZ" with each a positive decimal; nullopt when malformed or too large.
@@ -97,40 +88,50 @@ TetMesh builtin_mesh(const std::string& name) {
   if (name == "unknotted-hole") return topology::unknotted_hole_ball().mesh;
   if (name == "bings-house") return topology::bings_house_nobuenoss().mesh;
   if (name.rfind("grid:", 0) == 0) {
-    if (const auto n = parse_grid_size(name.substr(5))) return topology::grid_complex((*n)[0], (*n)[1], (*n)[2]).mesh;
+    if (const auto n = parse_grid_size(name.substr(5)))
+      return topology::grid_complex((*n)[0], (*n)[1], (*n)[2]).mesh;
     usage_error("--builtin: bad grid size '" + name + "' (want grid:NX,NY,NZ, positive, at most " +
                 std::to_string(max_builtin_tets) + " tets)");
   }
-  usage_error("--builtin: unknown builtin '" + name + "' (knotted-hole, unknotted-hole, bings-house, grid:NX,NY,NZ)");
+  usage_error("--builtin: unknown builtin '" + name +
+              "' (knotted-hole, unknotted-hole, bings-house, grid:NX,NY,NZ)");
 }
 
-void print_report(const Input& in, const topology::ExpansionOrder& order, const topology::TopologicalExpansionResult& r,
-                  double seconds, bool json) {
+void print_report(const Input& in, const topology::ExpansionOrder& order,
+                  const topology::TopologicalExpansionResult& r, double seconds, bool json) {
   const auto& k = r.k_manifold_counts;
   const std::string order_name = topology::to_string(order);
   if (json) {
     std::printf("{\"cmx_version\": %s, \"source\": %s, \"vertices\": %zu, \"tets\": %zu, \"order\": %s,\n",
-                json_quote(cmx_version).c_str(), json_quote(in.source).c_str(),
-                in.mesh.num_vertices(), in.mesh.num_tets(), json_quote(order_name).c_str());
-    std::printf(" \"chord_splits\": %zu, \"initial_cluster_vertices\": %zu, \"sequence_length\": %zu,\n", in.chord_splits,
-                r.initial_cluster_vertices, r.length());
-    std::printf(" \"k_manifold\": {\"1\": %zu, \"2\": %zu, \"3\": %zu, \"other\": %zu}, \"automatic\": %zu,\n", k[1], k[2], k[3],
-                k[0], r.automatic);
-    std::printf(" \"stuck\": %s, \"remaining_vertices\": %zu, \"remaining_euler\": %lld, \"remaining_components\": %zu,\n",
-                r.stuck ? "true" : "false", r.remaining.size(), static_cast<long long>(r.remaining_euler), r.remaining_components);
+                json_quote(cmx_version).c_str(), json_quote(in.source).c_str(), in.mesh.num_vertices(),
+                in.mesh.num_tets(), json_quote(order_name).c_str());
+    std::printf(" \"chord_splits\": %zu, \"initial_cluster_vertices\": %zu, \"sequence_length\": %zu,\n",
+                in.chord_splits, r.initial_cluster_vertices, r.length());
+    std::printf(
+        " \"k_manifold\": {\"1\": %zu, \"2\": %zu, \"3\": %zu, \"other\": %zu}, \"automatic\": %zu,\n", k[1],
+        k[2], k[3], k[0], r.automatic);
+    std::printf(
+        " \"stuck\": %s, \"remaining_vertices\": %zu, \"remaining_euler\": %lld, \"remaining_components\": "
+        "%zu,\n",
+        r.stuck ? "true" : "false", r.remaining.size(), static_cast<long long>(r.remaining_euler),
+        r.remaining_components);
     std::printf(" \"seconds\": %.6f}\n", seconds);
     return;
   }
-  std::printf("mesh: %s (%zu vertices, %zu tets; a ball)\n", in.source.c_str(), in.mesh.num_vertices(), in.mesh.num_tets());
+  std::printf("mesh: %s (%zu vertices, %zu tets; a ball)\n", in.source.c_str(), in.mesh.num_vertices(),
+              in.mesh.num_tets());
   std::printf("order: %s\n", order_name.c_str());
   std::printf("chord splits (to make the interior simply connected): %zu\n", in.chord_splits);
   std::printf("initial cluster vertices: %zu\n", r.initial_cluster_vertices);
   std::printf("sequence length: %zu\n", r.length());
-  std::printf("expansions by kind: 1-manifold %zu, 2-manifold %zu, 3-manifold %zu, other Eq.(1) %zu, automatic %zu\n", k[1], k[2],
-              k[3], k[0], r.automatic);
+  std::printf(
+      "expansions by kind: 1-manifold %zu, 2-manifold %zu, 3-manifold %zu, other Eq.(1) %zu, automatic %zu\n",
+      k[1], k[2], k[3], k[0], r.automatic);
   if (r.stuck)
-    std::printf("stuck: yes: %zu cluster vertices remain (Euler characteristic %lld, b0 %zu), none satisfies Eq. (1)\n",
-                r.remaining.size(), static_cast<long long>(r.remaining_euler), r.remaining_components);
+    std::printf(
+        "stuck: yes: %zu cluster vertices remain (Euler characteristic %lld, b0 %zu), none satisfies Eq. "
+        "(1)\n",
+        r.remaining.size(), static_cast<long long>(r.remaining_euler), r.remaining_components);
   else
     std::printf("stuck: no (every cluster vertex expanded)\n");
   std::printf("time: %.3f s (expansion)\n", seconds);
@@ -184,15 +185,16 @@ int run(const std::vector<std::string>& args) {
   if (!ball.ok) throw Failure(exit_invalid_problem, in.source + " is not a ball: " + ball.message);
   const std::vector<char> interior = raw ? std::vector<char>{} : simply_connected_interior(in);
   const auto start = std::chrono::steady_clock::now();
-  const topology::TopologicalExpansionResult result = topology::topological_expansion(in.mesh, order, interior);
+  const topology::TopologicalExpansionResult result =
+      topology::topological_expansion(in.mesh, order, interior);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   print_report(in, order, result, seconds, json);
   std::fflush(stdout);
   return exit_ok;
 }
 
-[[maybe_unused]] const bool registered =
-    register_command({"topo-expand", "topological expansion by Eq. (1) of a mesh's interior (reports stuck)", &run});
+[[maybe_unused]] const bool registered = register_command(
+    {"topo-expand", "topological expansion by Eq. (1) of a mesh's interior (reports stuck)", &run});
 
 }  // namespace
 }  // namespace cmx::cli

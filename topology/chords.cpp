@@ -8,18 +8,23 @@
 
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/mesh_edits.hpp"
 
 namespace cmx::topology {
 
 namespace {
 
-bool is_boundary_face(const TetMesh& m, const Triangle& f) { return tets_around_face(m, f[0], f[1], f[2]).size() == 1; }
+bool is_boundary_face(const TetMesh& m, const Triangle& f) {
+  return tets_around_face(m, f[0], f[1], f[2]).size() == 1;
+}
 
 bool all_boundary(const std::vector<char>& boundary, const Triangle& f) {
   return boundary[f[0]] && boundary[f[1]] && boundary[f[2]];
 }
 
-VertexId split_edge(ChordContext& c, VertexId a, VertexId b) { return c.split(a, b, invalid_index); }
+VertexId split_edge(ChordContext& c, VertexId a, VertexId b) {
+  return c.split(a, b, invalid_index);
+}
 
 // Every edge between two boundary vertices, sorted.
 std::set<std::pair<VertexId, VertexId>> boundary_pairs(const TetMesh& m, const std::vector<char>& boundary) {
@@ -28,7 +33,8 @@ std::set<std::pair<VertexId, VertexId>> boundary_pairs(const TetMesh& m, const s
     const Tet& tet = m.tet(t);
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j)
-        if (boundary[tet[i]] && boundary[tet[j]]) out.insert({std::min(tet[i], tet[j]), std::max(tet[i], tet[j])});
+        if (boundary[tet[i]] && boundary[tet[j]])
+          out.insert({std::min(tet[i], tet[j]), std::max(tet[i], tet[j])});
   }
   return out;
 }
@@ -94,8 +100,10 @@ std::vector<Triangle> chord_path_between_components(const TetMesh& m, const std:
       if (dist[t] + w >= dist[u]) continue;
       dist[u] = dist[t] + w;
       from[u] = {t, i};
-      if (w) q.push_back(u);
-      else q.push_front(u);
+      if (w)
+        q.push_back(u);
+      else
+        q.push_front(u);
     }
   }
   return {};
@@ -119,7 +127,8 @@ bool is_chord_face(const TetMesh& m, const std::vector<char>& boundary, const Tr
   return all_boundary(boundary, f) && !is_boundary_face(m, f);
 }
 
-int interior_runs(const TetMesh& m, const std::vector<char>& interior, VertexId a, VertexId b, bool& all_interior) {
+int interior_runs(const TetMesh& m, const std::vector<char>& interior, VertexId a, VertexId b,
+                  bool& all_interior) {
   std::vector<VertexId> cycle;
   int edges = 0;
   for (TetId t : tets_around_edge(m, a, b)) {
@@ -150,8 +159,10 @@ std::size_t connect_interior(ChordContext& c) {
       int edge = -1;
       for (int i = 0; i < 3 && edge < 0; ++i)
         if (is_chord_edge(c.mesh, c.boundary, f[i], f[(i + 1) % 3])) edge = i;
-      if (edge >= 0) split_edge(c, f[edge], f[(edge + 1) % 3]);
-      else c.split(f[0], f[1], f[2]);
+      if (edge >= 0)
+        split_edge(c, f[edge], f[(edge + 1) % 3]);
+      else
+        c.split(f[0], f[1], f[2]);
       ++splits;
     }
   }
@@ -181,8 +192,9 @@ std::size_t split_all_chords(ChordContext& c) {
       faces.insert(f);
     }
   for (const Triangle& f : faces)
-    if (!tets_around_face(c.mesh, f[0], f[1], f[2]).empty() && !is_chord_edge(c.mesh, c.boundary, f[0], f[1]) &&
-        !is_chord_edge(c.mesh, c.boundary, f[1], f[2]) && !is_chord_edge(c.mesh, c.boundary, f[0], f[2])) {
+    if (!tets_around_face(c.mesh, f[0], f[1], f[2]).empty() &&
+        !is_chord_edge(c.mesh, c.boundary, f[0], f[1]) && !is_chord_edge(c.mesh, c.boundary, f[1], f[2]) &&
+        !is_chord_edge(c.mesh, c.boundary, f[0], f[2])) {
       c.split(f[0], f[1], f[2]);
       ++splits;
     }
@@ -204,6 +216,20 @@ std::size_t make_interior_simply_connected(ChordContext& c) {
   splits += fill_interior_handles(c);
   if (!interior_simply_connected(c.mesh, c.interior)) splits += split_all_chords(c);
   return splits;
+}
+
+ChordSplits make_interior_simply_connected(TetMesh& mesh) {
+  std::vector<char> boundary = boundary_vertex_flags(mesh);
+  ChordSplits out{interior_vertex_flags(mesh), 0};
+  ChordContext c{mesh, boundary, out.interior, [&](VertexId a, VertexId b, VertexId f) {
+                   const SplitResult r =
+                       f == invalid_index ? split_edge(mesh, a, b) : split_face(mesh, a, b, f);
+                   boundary.push_back(0);
+                   out.interior.push_back(1);
+                   return r.new_vertex;
+                 }};
+  out.splits = make_interior_simply_connected(c);
+  return out;
 }
 
 }  // namespace cmx::topology

@@ -53,4 +53,11 @@ std::size_t split_all_chords(ChordContext& c);
 // connected: what topological expansion needs before it starts. Returns the number of splits.
 std::size_t make_interior_simply_connected(ChordContext& c);
 
+// The same on a bare mesh, split in place (topology/mesh_edits.hpp: no positions to mirror).
+struct ChordSplits {
+  std::vector<char> interior;  // one flag per vertex after the splits: the cluster
+  std::size_t splits = 0;
+};
+ChordSplits make_interior_simply_connected(TetMesh& mesh);
+
 }  // namespace cmx::topology

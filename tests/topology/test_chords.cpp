@@ -37,6 +37,18 @@ Flags flags_of(TetMesh m) {
   return f;
 }
 
+// Two 2x3x3 blocks of cells joined through the middle cell of a 1x3x3 slab: the slab's vertices
+// are all on the boundary, so the two interiors are separated by chords.
+TetMesh chord_wall_mesh() {
+  std::vector<char> keep(5 * 3 * 3, 0);
+  auto cell = [](int i, int j, int k) { return i + 5 * (j + 3 * k); };
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        if (i != 2 || (j == 1 && k == 1)) keep[std::size_t(cell(i, j, k))] = 1;
+  return voxel_complex(5, 3, 3, keep).mesh;
+}
+
 }  // namespace
 
 TEST_CASE("chord edges and faces are recognised") {
@@ -72,13 +84,7 @@ TEST_CASE("an interior cut in two by a chord wall is joined through the fewest c
   // A 5x2x2 grid whose x = 2 layer is all boundary vertices? Build it from a voxel complex: two
   // 2x2x2 blocks joined by a one-cell-thick slab of cells; the slab's vertices are all boundary
   // vertices except none, so the two interiors are separated by chords.
-  std::vector<char> keep(5 * 3 * 3, 0);
-  auto cell = [](int i, int j, int k) { return i + 5 * (j + 3 * k); };
-  for (int i = 0; i < 5; ++i)
-    for (int j = 0; j < 3; ++j)
-      for (int k = 0; k < 3; ++k)
-        if (i != 2 || (j == 1 && k == 1)) keep[std::size_t(cell(i, j, k))] = 1;
-  Flags f = flags_of(voxel_complex(5, 3, 3, keep).mesh);
+  Flags f = flags_of(chord_wall_mesh());
   REQUIRE(check_ball(f.m).ok);
   const auto before = cluster_mesh_counts(f.m, f.interior);
   CHECK(before.components == 2);
@@ -89,4 +95,21 @@ TEST_CASE("an interior cut in two by a chord wall is joined through the fewest c
   CHECK(check_ball(f.m).ok);
   (void)make_interior_simply_connected(c);
   CHECK(interior_simply_connected(f.m, f.interior));
+}
+
+TEST_CASE("the bare-mesh chord splits give the callback version's mesh and interior") {
+  Flags f = flags_of(chord_wall_mesh());
+  auto c = f.context();
+  const std::size_t splits = make_interior_simply_connected(c);
+  REQUIRE(splits > 0);
+
+  TetMesh bare = chord_wall_mesh();
+  const ChordSplits s = make_interior_simply_connected(bare);
+  CHECK(s.splits == splits);
+  CHECK(s.interior == f.interior);
+  REQUIRE(bare.num_vertices() == f.m.num_vertices());
+  CHECK(bare.live_tets().size() == f.m.live_tets().size());
+  for (TetId t : bare.live_tets()) CHECK(bare.tet(t) == f.m.tet(t));
+  CHECK(interior_simply_connected(bare, s.interior));
+  CHECK(check_ball(bare).ok);
 }
