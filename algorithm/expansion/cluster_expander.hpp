@@ -1,8 +1,9 @@
 #pragma once
 // The expansion loop of paper Alg. 1 as one object (internal to algorithm/, used through
-// cluster_expansion.hpp): its queue, classification and bookkeeping are defined in
-// cluster_expansion.cpp, the local refinement it falls back on (relaxation, pushes, bends,
-// inflation) in local_refinement.cpp.
+// cluster_expansion.hpp). Alg. 1 itself, line by line: cluster_mesh_expansion.cpp (run, handle,
+// refine_and_expand); the queue, classification and bookkeeping: cluster_expansion.cpp; the local
+// refinement it falls back on (relaxation, pushes, bends, inflation):
+// refinement/local_refinement.cpp.
 #include <array>
 #include <chrono>
 #include <cstdint>

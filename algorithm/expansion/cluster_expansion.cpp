@@ -27,49 +27,6 @@ std::uint64_t splitmix(std::uint64_t x) {
 
 }  // namespace
 
-ExpansionOutcome ClusterExpander::run() {
-  for (VertexId v = 0; v < e_.num_vertices(); ++v)
-    if (e_.unexpanded[v]) {
-      ++cluster_;
-      dirty(v);
-    }
-  flush_dirty();
-  while (cluster_ > 0) {
-    if (auto stop = check_limits()) return *stop;
-    report_progress(false);
-    const std::optional<Entry> next = pop();
-    if (!next) {
-      // Every candidate failed: one more round in which refinement may also push dangling
-      // leaves and inflate around cut vertices (heavier, and prone to chains of refinement, so
-      // only when nothing else is left).
-      if (aggressive_ || failures_ == 0) return stuck();
-      aggressive_ = true;
-      for (VertexId v = 0; v < e_.num_vertices(); ++v)
-        if (e_.unexpanded[v]) dirty(v);
-      flush_dirty();
-      continue;
-    }
-    const std::size_t before = cluster_;
-    try {
-      handle(*next);
-    } catch (PrecisionLost& lost) {
-      if (lost.loss().phase == "split") {  // a split's loss knows neither the step nor the operation
-        lost.loss().step = expanded_;
-        lost.loss().phase = std::string(label_) + " (split)";
-      }
-      throw;
-    }
-    if (cluster_ < before) aggressive_ = false;
-    if (s_.smooth_every && expanded_ >= next_smooth_) {
-      smooth_recent();
-      next_smooth_ = expanded_ + s_.smooth_every;
-    }
-    flush_dirty();
-  }
-  report_progress(true);
-  return {MapOutcome::success, {}};
-}
-
 void ClusterExpander::grow() {
   version_.resize(e_.num_vertices(), 0);
   cached_.resize(e_.num_vertices());
@@ -223,50 +180,6 @@ Placement ClusterExpander::place(const ExpansionCone& cone, const VertexId* witn
   if (p.info.certified) ++stats_.lps_certified;
   if (p.info.fell_back) ++stats_.lps_fell_back;
   return p;
-}
-
-void ClusterExpander::handle(const Entry& entry) {
-  const VertexId v = entry.v;
-  switch (entry.kind) {
-    case Kind::automatic:
-      label_ = "automatic";
-      expand_to(v, e_.center, entry.k);
-      ++stats_.expansions_automatic;
-      return;
-    case Kind::simple: {
-      const bool guessed = !cached_[v];
-      std::optional<Placement> p = std::move(cached_[v]);
-      if (!p) {
-        if (float_centre_[v]) p = place_at_point(e_, v, *float_centre_[v]);
-        if (p)
-          ++stats_.placements_float_centre;
-        else
-          p = place(gather_expansion_cone(e_, v), nullptr);
-      }
-      if (!p->ok()) {
-        if (!guessed)
-          throw MapError(MapErrorKind::internal, "a simple cone lost its interior",
-                         "vertex " + std::to_string(v));
-        guess_wrong_[v] = 1;
-        dirty(v);
-        return;
-      }
-      label_ = "simple";
-      expand_to(v, p->position, entry.k, &*p);
-      ++stats_.expansions_simple;
-      return;
-    }
-    case Kind::star_shapify:
-    case Kind::inflate:
-      // A failure changes nothing that matters for v: it waits until its star changes.
-      if (expand_subcluster(v)) return;
-      label_ = entry.kind == Kind::inflate ? "inflation" : "star-shapified";
-      if (const std::size_t before = e_.num_vertices(); !refine_and_expand(v, 0))
-        ++failures_;
-      else if (s_.collapse_after_refinement)
-        collapse_added_since(before);
-      return;
-  }
 }
 
 void ClusterExpander::expand_to(VertexId v, const HPoint& position, int k, const Placement* placement) {

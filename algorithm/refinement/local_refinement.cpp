@@ -21,25 +21,6 @@ int witness_distance(const std::unordered_map<VertexId, int>& dist, VertexId b) 
 
 }  // namespace
 
-// Expands cluster vertex v now if it can be done: simply; after re-centring its base; by
-// inflation of dangling base edges; by star-shapification. Each step keeps every invariant.
-bool ClusterExpander::refine_and_expand(VertexId v, int depth) {
-  const Relabel relabel(label_, depth > 0 ? "refinement" : label_);
-  const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
-  if (!st.expandable) return false;
-  if (try_simple(v, st.manifold_k)) return true;
-  if (depth == 0 && relax_base(v) && try_simple(v, st.manifold_k)) return true;
-  if (has_dangling_edge(cone_base(e_, v))) {
-    if (!inflate(v, depth) || !e_.unexpanded[v]) return !e_.unexpanded[v];
-    if (try_simple(v, st.manifold_k)) return true;
-  }
-  if (bend_and_expand(v, st.manifold_k)) return true;
-  if (star_shapify(v, st.manifold_k, depth, false)) return true;
-  if (!aggressive_ || depth > 0) return false;
-  if (star_shapify(v, st.manifold_k, depth, true)) return true;
-  return paper_inflate(v, depth) && (!e_.unexpanded[v] || try_simple(v, st.manifold_k));
-}
-
 bool ClusterExpander::try_simple(VertexId v, int k) {
   const ExpansionCone cone = gather_expansion_cone(e_, v);
   if (cone.base_tets == 0) return false;

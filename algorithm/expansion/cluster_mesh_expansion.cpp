@@ -1,0 +1,142 @@
+// Paper Alg. 1, the Cluster Mesh Expansion loop, as cmx runs it: the three functions of this file
+// are its control flow, and every step they call is named below by the paper's line or section.
+//
+//   before the loop   problem/preprocess.cpp shrinks every interior vertex to p_c: the cluster
+//                     mesh M* is simply connected (chord splits) and every tet outside it positive.
+//   while M* is not empty                                        run()
+//     line 5          select an expandable candidate (Eq. 1) by the priority of Sec. 4.1.2:
+//                     simple before star-shapification before inflation, then lower k, then
+//                     expanded neighbours                        pop(), evaluate(), key()
+//                     none left: one more round with heavier refinement, then stuck (a NOBUENOSS
+//                     or a refinement that failed)               stuck()
+//                     (map.cpp then searches a shelling: refinement/shelling_fallback.hpp)
+//                                                                handle()
+//     line 11         simply expandable: place at the (precision-reduced) Chebyshev centre of its
+//                     cone's kernel (Sec. 4.2.3)                 place() -> place_in_cone()
+//     Sec. 4.2.5      else first try a subcluster of up to four  expand_subcluster()
+//                                                                refine_and_expand()
+//     (relaxation)    re-centre the expanded base vertices       relax_base()
+//     line 9          inflation, when the base has dangling edges or cut vertices
+//                                                                inflate(), paper_inflate()
+//     line 10         star-shapification, when the cone has no kernel: bends, then pushes
+//                                                                bend_and_expand(), star_shapify()
+//     line 11         then place as above                        try_simple(), expand_to()
+//     Sec. 4.2.2      collapse what the refinement added         collapse_added_since()
+//     Sec. 4.2.4      smooth the recently expanded vertices      smooth_recent()
+//
+// The refinement steps are in refinement/local_refinement.cpp, the bookkeeping (queue, dirty
+// set, limits, trace) in cluster_expansion.cpp; docs/algorithm.md explains each step.
+#include "algorithm/expansion/cluster_expander.hpp"
+#include "algorithm/map_error.hpp"
+
+namespace cmx::algorithm::detail {
+
+ExpansionOutcome ClusterExpander::run() {
+  for (VertexId v = 0; v < e_.num_vertices(); ++v)
+    if (e_.unexpanded[v]) {
+      ++cluster_;
+      dirty(v);
+    }
+  flush_dirty();
+  while (cluster_ > 0) {
+    if (auto stop = check_limits()) return *stop;
+    report_progress(false);
+    const std::optional<Entry> next = pop();  // line 5
+    if (!next) {
+      // Every candidate failed: one more round in which refinement may also push dangling
+      // leaves and inflate around cut vertices (heavier, and prone to chains of refinement, so
+      // only when nothing else is left).
+      if (aggressive_ || failures_ == 0) return stuck();
+      aggressive_ = true;
+      for (VertexId v = 0; v < e_.num_vertices(); ++v)
+        if (e_.unexpanded[v]) dirty(v);
+      flush_dirty();
+      continue;
+    }
+    const std::size_t before = cluster_;
+    try {
+      handle(*next);
+    } catch (PrecisionLost& lost) {
+      if (lost.loss().phase == "split") {  // a split's loss knows neither the step nor the operation
+        lost.loss().step = expanded_;
+        lost.loss().phase = std::string(label_) + " (split)";
+      }
+      throw;
+    }
+    if (cluster_ < before) aggressive_ = false;
+    if (s_.smooth_every && expanded_ >= next_smooth_) {
+      smooth_recent();
+      next_smooth_ = expanded_ + s_.smooth_every;
+    }
+    flush_dirty();
+  }
+  report_progress(true);
+  return {MapOutcome::success, {}};
+}
+
+// One popped candidate (Alg. 1 lines 9-11 for it).
+void ClusterExpander::handle(const Entry& entry) {
+  const VertexId v = entry.v;
+  switch (entry.kind) {
+    case Kind::automatic:
+      label_ = "automatic";
+      expand_to(v, e_.center, entry.k);
+      ++stats_.expansions_automatic;
+      return;
+    case Kind::simple: {  // line 11
+      const bool guessed = !cached_[v];
+      std::optional<Placement> p = std::move(cached_[v]);
+      if (!p) {
+        if (float_centre_[v]) p = place_at_point(e_, v, *float_centre_[v]);
+        if (p)
+          ++stats_.placements_float_centre;
+        else
+          p = place(gather_expansion_cone(e_, v), nullptr);
+      }
+      if (!p->ok()) {
+        if (!guessed)
+          throw MapError(MapErrorKind::internal, "a simple cone lost its interior",
+                         "vertex " + std::to_string(v));
+        guess_wrong_[v] = 1;
+        dirty(v);
+        return;
+      }
+      label_ = "simple";
+      expand_to(v, p->position, entry.k, &*p);
+      ++stats_.expansions_simple;
+      return;
+    }
+    case Kind::star_shapify:  // lines 10 and 11
+    case Kind::inflate:       // lines 9 to 11
+      // A failure changes nothing that matters for v: it waits until its star changes.
+      if (expand_subcluster(v)) return;
+      label_ = entry.kind == Kind::inflate ? "inflation" : "star-shapified";
+      if (const std::size_t before = e_.num_vertices(); !refine_and_expand(v, 0))
+        ++failures_;
+      else if (s_.collapse_after_refinement)
+        collapse_added_since(before);
+      return;
+  }
+}
+
+// Expands cluster vertex v now if it can be done: simply; after re-centring its base; by
+// inflation of dangling base edges; by star-shapification. Each step keeps every invariant.
+bool ClusterExpander::refine_and_expand(VertexId v, int depth) {
+  const Relabel relabel(label_, depth > 0 ? "refinement" : label_);
+  const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
+  if (!st.expandable) return false;
+  if (try_simple(v, st.manifold_k)) return true;
+  if (depth == 0 && relax_base(v) && try_simple(v, st.manifold_k)) return true;
+  if (has_dangling_edge(cone_base(e_, v))) {  // line 9
+    if (!inflate(v, depth) || !e_.unexpanded[v]) return !e_.unexpanded[v];
+    if (try_simple(v, st.manifold_k)) return true;
+  }
+  if (bend_and_expand(v, st.manifold_k)) return true;  // line 10, then 11
+  if (star_shapify(v, st.manifold_k, depth, false)) return true;
+  if (!aggressive_ || depth > 0) return false;
+  if (star_shapify(v, st.manifold_k, depth, true)) return true;
+  // Line 9 as the paper does it (Sec. 4.2.1: split around the base's cut vertices).
+  return paper_inflate(v, depth) && (!e_.unexpanded[v] || try_simple(v, st.manifold_k));
+}
+
+}  // namespace cmx::algorithm::detail
