@@ -25,7 +25,7 @@
 //     Sec. 4.2.4      smooth the recently expanded vertices      smooth_recent()
 //
 // The refinement steps are in refinement/local_refinement.cpp, the bookkeeping (queue, dirty
-// set, limits, trace) in cluster_expansion.cpp; docs/algorithm.md explains each step.
+// set, limits, trace) in cluster_expansion.cpp; docs/algorithm/expansion.md explains each step.
 #include "algorithm/expansion/cluster_expander.hpp"
 #include "algorithm/map_error.hpp"
 

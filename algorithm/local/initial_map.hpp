@@ -1,6 +1,6 @@
 #pragma once
 // Initial maps for the local repair: a target position for every vertex, from which the repair
-// finds the non-positive tets and re-maps only stars around them (docs/algorithm.md, "Initial
+// finds the non-positive tets and re-maps only stars around them (docs/algorithm/local.md, "Initial
 // maps"). Eigen solves the Tutte system; it is included only in initial_map.cpp, never here.
 #include <array>
 #include <string>

@@ -9,7 +9,7 @@
 // Stars share no tet and no moving vertex, so they are mapped independently, several at once,
 // and their refined tets replace theirs. The stitched map is verified exactly as a whole by the
 // independent verifier: every tet positive and the boundary as prescribed make it bijective
-// (docs/algorithm.md, "Local repair", gives the degree argument).
+// (docs/algorithm/local.md, "Local repair", gives the degree argument).
 //
 // Vertices outside the stars keep the initial map's positions, which are doubles for a Tutte map:
 // the double output re-rounds only what the stars changed.

@@ -3,7 +3,7 @@
 // prescribed positions) is classified tet by tet, exactly, and every group of tets that it does
 // not map positively is enclosed in a star, a ball of tets whose image boundary is star-shaped.
 // Re-mapping each star on its own, its boundary kept where it is, then repairs the whole map
-// (docs/algorithm.md, "Stars of a local repair": the growth rule and why it terminates).
+// (docs/algorithm/local.md, "Stars of a local repair": the growth rule and why it terminates).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,7 +48,7 @@ struct StarSet {
   std::vector<Star> stars;                    // disjoint in tets, ordered by their smallest tet; empty when not ok
   std::size_t tets_in_stars = 0;              // when not ok: how many the stars held when growth ended
   std::size_t growth_steps = 0;               // tets added beyond the defects, over all stars
-  // How the growth went (docs/algorithm.md measures them).
+  // How the growth went (docs/algorithm/local.md measures them).
   std::size_t kernel_tests = 0;               // kernel tests run (one float LP each)
   std::size_t exact_lps = 0;                  // of those, decided by the exact Chebyshev LP
   std::size_t repairs = 0;                    // additions that may break the ball, repaired by local tests

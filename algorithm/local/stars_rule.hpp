@@ -1,5 +1,5 @@
 #pragma once
-// The growth rule of algorithm/local/stars.hpp (docs/algorithm.md, "Stars of a local repair"):
+// The growth rule of algorithm/local/stars.hpp (docs/algorithm/local.md, "Stars of a local repair"):
 // stars grown one after another from the non-positive tets in handle order, each until it is a
 // ball with a star-shaped boundary, absorbing whatever finished star it grows into.
 #include <array>

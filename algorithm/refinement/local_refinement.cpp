@@ -1,5 +1,5 @@
 // Local refinement of the expansion loop (ClusterExpander, cluster_expander.hpp): what runs when a
-// popped vertex is not simply expandable (docs/algorithm.md: relaxation, star-shapification by
+// popped vertex is not simply expandable (docs/algorithm/expansion.md: relaxation, star-shapification by
 // pushes and bends, inflation with cluster isolation).
 #include <algorithm>
 #include <tuple>

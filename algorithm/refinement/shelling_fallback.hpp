@@ -6,7 +6,7 @@
 // sequence. The search is greedy (topology/shelling.hpp) and bounded; not finding a shelling does
 // not prove that none exists, but both NOBUENOSS inputs the project knows (Furch's knotted hole,
 // which is not shellable, and the ball around Bing's house) defeat it. Replaying a shelling
-// geometrically is not built: docs/algorithm.md records why the paper's Alg. 2 does not keep the
+// geometrically is not built: docs/algorithm/expansion.md records why the paper's Alg. 2 does not keep the
 // method's invariants as stated, and the attempts made. So a NOBUENOSS always ends as `stuck`;
 // this stage says whether the input is known to be shellable, which is what a user can act on
 // (a non-shellable input needs remeshing, a shellable one is a case for the missing replay).

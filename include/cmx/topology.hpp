@@ -1,8 +1,8 @@
 #pragma once
 // Combinatorial queries on tetrahedral meshes given as plain index arrays (no coordinates): the
 // ball check cmx::map_to_domain needs of its input, the boundary surface, and the topological
-// expandability of a vertex of a cluster mesh (Eq. (1) of the Cluster-Mesh Expansion paper, Sec. 3
-// and 5.1 of docs/algorithm.md).
+// expandability of a vertex of a cluster mesh (Eq. (1) of the Cluster-Mesh Expansion paper, Sec. 3;
+// docs/topology.md).
 //
 //   cmx::BallCheck b = cmx::is_ball(tets, vertex_count);
 //   if (!b.ok) std::cerr << b.message << '\n';  // e.g. "vertex 4: its tets form 2 ..."
