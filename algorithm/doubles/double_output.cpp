@@ -8,6 +8,7 @@
 
 #include "algorithm/doubles/decrowd.hpp"
 #include "algorithm/expansion/expansion_cone.hpp"
+#include "algorithm/option_names.hpp"
 #include "algorithm/run_control.hpp"
 #include "algorithm/tuning.hpp"
 #include "arith/rounding.hpp"
@@ -16,24 +17,17 @@
 namespace cmx::algorithm {
 
 namespace {
-// The option names of the policies (--snap), one table for parsing and printing.
-constexpr std::pair<SnapPolicy, std::string_view> snap_policy_names[] = {
-    {SnapPolicy::none, "none"},
-    {SnapPolicy::nearest, "nearest"},
-    {SnapPolicy::chebyshev_pass, "chebyshev-pass"},
-    {SnapPolicy::repair, "repair"}};
+constexpr OptionNames<SnapPolicy, 4> snap_policy_names{{{{SnapPolicy::none, "none"},
+                                                         {SnapPolicy::nearest, "nearest"},
+                                                         {SnapPolicy::chebyshev_pass, "chebyshev-pass"},
+                                                         {SnapPolicy::repair, "repair"}}}};
 }  // namespace
 
 std::optional<SnapPolicy> parse_snap_policy(std::string_view name) {
-  for (const auto& [policy, policy_name] : snap_policy_names)
-    if (policy_name == name) return policy;
-  return std::nullopt;
+  return snap_policy_names.parse(name);
 }
-
 std::string_view to_string(SnapPolicy p) {
-  for (const auto& [policy, policy_name] : snap_policy_names)
-    if (policy == p) return policy_name;
-  return "?";
+  return snap_policy_names.name(p);
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <utility>
 
+#include "algorithm/option_names.hpp"
 #include "algorithm/tuning.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
@@ -12,24 +13,17 @@
 namespace cmx::algorithm {
 
 namespace {
-// The option names of the policies (--precision), one table for parsing and printing.
-constexpr std::pair<PrecisionPolicy, std::string_view> precision_policy_names[] = {
-    {PrecisionPolicy::none, "none"},
-    {PrecisionPolicy::dyadic, "dyadic"},
-    {PrecisionPolicy::shift, "shift"},
-    {PrecisionPolicy::segment, "segment"}};
+constexpr OptionNames<PrecisionPolicy, 4> precision_policy_names{{{{PrecisionPolicy::none, "none"},
+                                                                   {PrecisionPolicy::dyadic, "dyadic"},
+                                                                   {PrecisionPolicy::shift, "shift"},
+                                                                   {PrecisionPolicy::segment, "segment"}}}};
 }  // namespace
 
 std::optional<PrecisionPolicy> parse_precision_policy(std::string_view name) {
-  for (const auto& [policy, policy_name] : precision_policy_names)
-    if (policy_name == name) return policy;
-  return std::nullopt;
+  return precision_policy_names.parse(name);
 }
-
 std::string_view to_string(PrecisionPolicy p) {
-  for (const auto& [policy, policy_name] : precision_policy_names)
-    if (policy == p) return policy_name;
-  return "?";
+  return precision_policy_names.name(p);
 }
 
 namespace {
