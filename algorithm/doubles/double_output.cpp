@@ -8,27 +8,12 @@
 
 #include "algorithm/doubles/decrowd.hpp"
 #include "algorithm/expansion/expansion_cone.hpp"
-#include "algorithm/option_names.hpp"
 #include "algorithm/run_control.hpp"
 #include "algorithm/tuning.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
 
 namespace cmx::algorithm {
-
-namespace {
-constexpr OptionNames<SnapPolicy, 4> snap_policy_names{{{{SnapPolicy::none, "none"},
-                                                         {SnapPolicy::nearest, "nearest"},
-                                                         {SnapPolicy::chebyshev_pass, "chebyshev-pass"},
-                                                         {SnapPolicy::repair, "repair"}}}};
-}  // namespace
-
-std::optional<SnapPolicy> parse_snap_policy(std::string_view name) {
-  return snap_policy_names.parse(name);
-}
-std::string_view to_string(SnapPolicy p) {
-  return snap_policy_names.name(p);
-}
 
 namespace {
 bool passed(RunControl* control) {

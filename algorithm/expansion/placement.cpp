@@ -3,7 +3,6 @@
 #include <cmath>
 #include <utility>
 
-#include "algorithm/option_names.hpp"
 #include "algorithm/tuning.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
@@ -11,20 +10,6 @@
 #include "lp/few_bit_point.hpp"
 
 namespace cmx::algorithm {
-
-namespace {
-constexpr OptionNames<PrecisionPolicy, 4> precision_policy_names{{{{PrecisionPolicy::none, "none"},
-                                                                   {PrecisionPolicy::dyadic, "dyadic"},
-                                                                   {PrecisionPolicy::shift, "shift"},
-                                                                   {PrecisionPolicy::segment, "segment"}}}};
-}  // namespace
-
-std::optional<PrecisionPolicy> parse_precision_policy(std::string_view name) {
-  return precision_policy_names.parse(name);
-}
-std::string_view to_string(PrecisionPolicy p) {
-  return precision_policy_names.name(p);
-}
 
 namespace {
 

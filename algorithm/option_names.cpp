@@ -1,0 +1,35 @@
+// The option names of the method's policies, in one place: the names --snap and --precision take.
+#include "algorithm/option_names.hpp"
+
+#include "algorithm/doubles/double_output.hpp"
+#include "algorithm/expansion/placement.hpp"
+
+namespace cmx::algorithm {
+namespace {
+
+constexpr OptionNames<SnapPolicy, 4> snap_policy_names{{{{SnapPolicy::none, "none"},
+                                                         {SnapPolicy::nearest, "nearest"},
+                                                         {SnapPolicy::chebyshev_pass, "chebyshev-pass"},
+                                                         {SnapPolicy::repair, "repair"}}}};
+constexpr OptionNames<PrecisionPolicy, 4> precision_policy_names{{{{PrecisionPolicy::none, "none"},
+                                                                   {PrecisionPolicy::dyadic, "dyadic"},
+                                                                   {PrecisionPolicy::shift, "shift"},
+                                                                   {PrecisionPolicy::segment, "segment"}}}};
+
+}  // namespace
+
+std::optional<SnapPolicy> parse_snap_policy(std::string_view name) {
+  return snap_policy_names.parse(name);
+}
+std::string_view to_string(SnapPolicy p) {
+  return snap_policy_names.name(p);
+}
+
+std::optional<PrecisionPolicy> parse_precision_policy(std::string_view name) {
+  return precision_policy_names.parse(name);
+}
+std::string_view to_string(PrecisionPolicy p) {
+  return precision_policy_names.name(p);
+}
+
+}  // namespace cmx::algorithm
