@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "algorithm/verify/invariants.hpp"
 #include "algorithm/map_error.hpp"
+#include "algorithm/verify/invariants.hpp"
 #include "kernel/orient.hpp"
 #include "topology/mesh_edits.hpp"
 
@@ -14,6 +14,7 @@ VertexId Embedding::append_vertex(const HPoint& src, const HPoint& at, bool in_c
   target.push_back(arith.round(at));
   unexpanded.push_back(in_cluster ? 1 : 0);
   boundary.push_back(0);
+  properties.grow(source.size());
   return VertexId(source.size() - 1);
 }
 
@@ -21,8 +22,9 @@ VertexId Embedding::append_vertex(const HPoint& src, const HPoint& at, bool in_c
 void Embedding::check_rounded_split(VertexId v, const HPoint& exact_source) const {
   if (arith.exact() || source[v] == exact_source) return;
   if (const std::optional<InvalidTet> bad = first_invalid_tet_around(*this, v, true))
-    throw PrecisionLost(precision_loss_at(*this, v, *bad, "split", "the rounded source position of new vertex " +
-                                                                     std::to_string(v) + " flattens a source tet"));
+    throw PrecisionLost(precision_loss_at(
+        *this, v, *bad, "split",
+        "the rounded source position of new vertex " + std::to_string(v) + " flattens a source tet"));
 }
 
 VertexId Embedding::split_edge(VertexId a, VertexId b, const HPoint& at, bool in_cluster) {
@@ -57,7 +59,8 @@ Sign Embedding::orient_source(const topology::Tet& t) const {
 }
 
 int Embedding::unexpanded_count(const topology::Tet& t) const {
-  return (unexpanded[t[0]] != 0) + (unexpanded[t[1]] != 0) + (unexpanded[t[2]] != 0) + (unexpanded[t[3]] != 0);
+  return (unexpanded[t[0]] != 0) + (unexpanded[t[1]] != 0) + (unexpanded[t[2]] != 0) +
+         (unexpanded[t[3]] != 0);
 }
 
 }  // namespace cmx::algorithm

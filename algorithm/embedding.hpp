@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "algorithm/vertex_properties.hpp"
 #include "kernel/coordinate_arith.hpp"
 #include "kernel/filter_policy.hpp"
 #include "kernel/homogeneous_point.hpp"
@@ -19,14 +20,17 @@ using topology::VertexId;
 
 struct Embedding {
   topology::TetMesh mesh;
-  std::vector<HPoint> source;       // one per vertex
-  std::vector<HPoint> target;       // one per vertex (unexpanded vertices: at `center`)
-  std::vector<char> unexpanded;     // 1 = in the cluster mesh
-  std::vector<char> boundary;       // 1 = boundary vertex (prescribed, never moves)
-  HPoint center;                    // p_c
-  FilterPolicy filter;              // arithmetic of every predicate
-  FilterStats* stats = nullptr;     // optional tier counters
-  CoordinateArith arith;            // number system of every coordinate (--arith; default exact)
+  std::vector<HPoint> source;    // one per vertex
+  std::vector<HPoint> target;    // one per vertex (unexpanded vertices: at `center`)
+  std::vector<char> unexpanded;  // 1 = in the cluster mesh
+  std::vector<char> boundary;    // 1 = boundary vertex (prescribed, never moves)
+  HPoint center;                 // p_c
+  FilterPolicy filter;           // arithmetic of every predicate
+  FilterStats* stats = nullptr;  // optional tier counters
+  CoordinateArith arith;         // number system of every coordinate (--arith; default exact)
+  // Per-vertex data of the map's users (the expansion loop's queue state), grown with every new
+  // vertex (vertex_properties.hpp); a copy of the Embedding starts without them.
+  VertexProperties properties;
 
   std::size_t num_vertices() const { return mesh.num_vertices(); }
 

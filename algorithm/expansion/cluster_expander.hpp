@@ -52,14 +52,20 @@ class Relabel {
 class ClusterExpander {
  public:
   ClusterExpander(Embedding& e, const ExpansionSettings& s, MapStatistics& stats)
-      : e_(e), s_(s), stats_(stats) {}
+      : e_(e),
+        s_(s),
+        stats_(stats),
+        version_(e.properties.make<std::uint32_t>(e.num_vertices(), 0)),
+        cached_(e.properties.make<std::optional<Placement>>(e.num_vertices())),
+        float_centre_(e.properties.make<std::optional<std::array<double, 3>>>(e.num_vertices())),
+        is_dirty_(e.properties.make<char>(e.num_vertices(), 0)),
+        guess_wrong_(e.properties.make<char>(e.num_vertices(), 0)) {}
 
   ExpansionOutcome run();
 
  private:
   // --- bookkeeping -------------------------------------------------------------------------
 
-  void grow();
   void dirty(VertexId v);
   void dirty_star(VertexId v);
   void flush_dirty();
@@ -152,19 +158,19 @@ class ClusterExpander {
   MapStatistics& stats_;
   topology::ClusterLinkWorkspace ws_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
-  std::vector<std::uint32_t> version_;
-  std::vector<std::optional<Placement>> cached_;
-  std::vector<std::optional<std::array<double, 3>>>
-      float_centre_;  // of a cone guessed open, from classification
-  std::vector<char> is_dirty_;
+  // Per-vertex state, grown with the mesh (Embedding::properties).
+  VertexProperty<std::uint32_t> version_;                              // of v's queue entries
+  VertexProperty<std::optional<Placement>> cached_;                    // v's placement from classification
+  VertexProperty<std::optional<std::array<double, 3>>> float_centre_;  // of a cone guessed open
+  VertexProperty<char> is_dirty_;                                      // 1: v waits in dirty_
+  VertexProperty<char> guess_wrong_;  // 1: the float guess of v's cone was wrong once; decide exactly
   std::vector<VertexId> dirty_;
   std::unordered_map<VertexId, int> inflations_, relaxed_moves_;
   std::size_t cluster_ = 0, expanded_ = 0, failures_ = 0, max_bits_ = 0;
   bool aggressive_ = false;
   std::vector<VertexId> recent_;  // expanded since the last smoothing
   std::size_t next_smooth_ = 0;
-  std::vector<char> guess_wrong_;  // 1: the float guess of v's cone was wrong once; decide exactly
-  const char* label_ = "";         // the kind of expansion under way, for the trace
+  const char* label_ = "";  // the kind of expansion under way, for the trace
   std::chrono::steady_clock::time_point last_report_{};
 };
 

@@ -27,16 +27,7 @@ std::uint64_t splitmix(std::uint64_t x) {
 
 }  // namespace
 
-void ClusterExpander::grow() {
-  version_.resize(e_.num_vertices(), 0);
-  cached_.resize(e_.num_vertices());
-  float_centre_.resize(e_.num_vertices());
-  guess_wrong_.resize(e_.num_vertices(), 0);
-  is_dirty_.resize(e_.num_vertices(), 0);
-}
-
 void ClusterExpander::dirty(VertexId v) {
-  grow();
   if (!is_dirty_[v]) {
     is_dirty_[v] = 1;
     dirty_.push_back(v);
@@ -123,7 +114,6 @@ std::array<std::int64_t, 4> ClusterExpander::key(Kind kind, int k, std::uint32_t
 }
 
 void ClusterExpander::evaluate(VertexId v) {
-  grow();
   ++version_[v];
   cached_[v].reset();
   float_centre_[v].reset();
@@ -255,7 +245,6 @@ VertexId ClusterExpander::push(VertexId c, VertexId b) {
       if (e_.unexpanded[w]) dirty(w);
   const VertexId m = e_.split_edge(c, b, e_.center, true);
   ++cluster_;
-  grow();
   dirty(m);
   if (s_.check) check_all("after pushing edge (" + std::to_string(c) + ", " + std::to_string(b) + ")");
   return m;
@@ -305,7 +294,6 @@ bool ClusterExpander::expand_subcluster(VertexId v) {
 // expanded are collapsed into an expanded neighbour wherever every invariant survives, so that
 // the next cones do not inherit them.
 void ClusterExpander::collapse_added_since(std::size_t first) {
-  grow();
   for (std::size_t g = e_.num_vertices(); g-- > first;) {
     if (e_.mesh.tets_of(VertexId(g)).empty()) continue;
     const std::optional<VertexId> keep = try_collapse(e_, VertexId(g));

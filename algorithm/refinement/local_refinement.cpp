@@ -150,7 +150,6 @@ bool ClusterExpander::bend_and_expand(VertexId v, int k) {
   for (const Bend& bend : bends) {
     const VertexId from = current.count(bend.b) ? current[bend.b] : bend.b;
     const VertexId m = e_.split_edge(v, from, bend.q, false);
-    grow();
     current[bend.b] = m;
     ++stats_.bends;
     max_bits_ = std::max(max_bits_, bend.q.bit_size());
