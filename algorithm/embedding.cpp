@@ -50,6 +50,44 @@ VertexId Embedding::split_face(VertexId a, VertexId b, VertexId c, const HPoint&
   return v;
 }
 
+topology::CollapseResult Embedding::collapse_edge(VertexId keep, VertexId gone) {
+  return topology::collapse_edge(mesh, keep, gone);
+}
+
+topology::FlipResult Embedding::apply_flip(const topology::FlipPlan& plan) {
+  return topology::apply_flip(mesh, plan);
+}
+
+void Embedding::undo_flip(const topology::FlipResult& flip) {
+  topology::undo_flip(mesh, flip);
+}
+
+void Embedding::compact_vertices(std::size_t input_vertices) {
+  if (properties.live() != 0)
+    throw MapError(MapErrorKind::internal, "compact_vertices: per-vertex properties are still live");
+  const std::size_t n = num_vertices();
+  std::vector<VertexId> new_id(n, topology::invalid_index);
+  std::size_t next = 0;
+  for (std::size_t v = 0; v < n; ++v)
+    if (v < input_vertices || !mesh.tets_of(VertexId(v)).empty()) new_id[v] = VertexId(next++);
+  std::vector<topology::Tet> tets;
+  for (TetId t : mesh.live_tets()) {
+    topology::Tet x = mesh.tet(t);
+    for (auto& v : x) v = new_id[v];
+    tets.push_back(x);
+  }
+  auto keep = [&](auto& vec) {
+    for (std::size_t v = 0; v < n; ++v)
+      if (new_id[v] != topology::invalid_index && new_id[v] != v) vec[new_id[v]] = std::move(vec[v]);
+    vec.resize(next);
+  };
+  keep(source);
+  keep(target);
+  keep(unexpanded);
+  keep(boundary);
+  mesh = topology::TetMesh(next, tets);
+}
+
 Sign Embedding::orient_target(const topology::Tet& t) const {
   return orient3d(target[t[0]], target[t[1]], target[t[2]], target[t[3]], {filter, stats});
 }

@@ -1,8 +1,10 @@
 #pragma once
 // The map under construction (paper Alg. 1): a tet mesh with, per vertex, an
 // exact source position, an exact target position and whether it is still in the cluster
-// (unexpanded, sitting at the shrink point p_c). Every edit goes through here so that each split
-// is mirrored in the source mesh (invariant 5) and every new vertex gets both positions.
+// (unexpanded, sitting at the shrink point p_c). Every edit of the mesh goes through here: splits
+// (so that each is mirrored in the source mesh, invariant 5, every new vertex gets both positions
+// and every per-vertex property grows), collapses, flips and the final compaction. Positions and
+// flags are plain arrays that the method's steps read and move.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -11,6 +13,7 @@
 #include "kernel/coordinate_arith.hpp"
 #include "kernel/filter_policy.hpp"
 #include "kernel/homogeneous_point.hpp"
+#include "topology/mesh_edits.hpp"
 #include "topology/tet_mesh.hpp"
 
 namespace cmx::algorithm {
@@ -42,6 +45,17 @@ struct Embedding {
   VertexId split_edge(VertexId a, VertexId b, const HPoint& at, bool in_cluster);
   // Same for face abc (1 -> 3), source position the source barycentre.
   VertexId split_face(VertexId a, VertexId b, VertexId c, const HPoint& at, bool in_cluster);
+
+  // The edits that change connectivity and keep vertex positions (topology/mesh_edits.hpp). The
+  // caller has checked that the new tets are positive: these only apply them.
+  // Edge (keep, gone) contracted into keep; gone is left without tets (compact_vertices drops it).
+  topology::CollapseResult collapse_edge(VertexId keep, VertexId gone);
+  // A 2-3 or 3-2 flip, and its exact undo.
+  topology::FlipResult apply_flip(const topology::FlipPlan& plan);
+  void undo_flip(const topology::FlipResult& flip);
+  // Drops the added vertices (index >= input_vertices) that no tet uses; the others keep their
+  // order. Precondition: no live property (properties index by the old numbering).
+  void compact_vertices(std::size_t input_vertices);
 
   // Orientation of a tet in the target (resp. source) positions, through the filter cascade.
   Sign orient_target(const topology::Tet& t) const;

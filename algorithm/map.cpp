@@ -206,7 +206,7 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
       if (std::string why = check_invariants(e, prescribed); !why.empty())
         throw MapError(MapErrorKind::internal, "the final collapse pass broke an invariant: " + why);
   }
-  compact_vertices(e, s.input_vertices);  // vertices collapsed away, or inflation splits undone
+  e.compact_vertices(s.input_vertices);  // vertices collapsed away, or inflation splits undone
   if (out.outcome == MapOutcome::success) {
     phase = Clock::now();
     make_doubles(e, options, control, r);

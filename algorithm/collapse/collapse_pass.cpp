@@ -30,33 +30,9 @@ std::optional<VertexId> try_collapse(Embedding& e, VertexId gone) {
   for (VertexId keep : topology::vertex_neighbors(e.mesh, gone)) {
     // Into an expanded vertex only: the cluster mesh (simplices of cluster vertices) is untouched.
     if (e.unexpanded[keep] || !collapse_keeps_map_valid(e, keep, gone)) continue;
-    if (topology::collapse_edge(e.mesh, keep, gone).ok) return keep;
+    if (e.collapse_edge(keep, gone).ok) return keep;
   }
   return std::nullopt;
-}
-
-void compact_vertices(Embedding& e, std::size_t input_vertices) {
-  const std::size_t n = e.num_vertices();
-  std::vector<VertexId> new_id(n, topology::invalid_index);
-  std::size_t next = 0;
-  for (std::size_t v = 0; v < n; ++v)
-    if (v < input_vertices || !e.mesh.tets_of(VertexId(v)).empty()) new_id[v] = VertexId(next++);
-  std::vector<topology::Tet> tets;
-  for (TetId t : e.mesh.live_tets()) {
-    topology::Tet x = e.mesh.tet(t);
-    for (auto& v : x) v = new_id[v];
-    tets.push_back(x);
-  }
-  auto keep = [&](auto& vec) {
-    for (std::size_t v = 0; v < n; ++v)
-      if (new_id[v] != topology::invalid_index && new_id[v] != v) vec[new_id[v]] = std::move(vec[v]);
-    vec.resize(next);
-  };
-  keep(e.source);
-  keep(e.target);
-  keep(e.unexpanded);
-  keep(e.boundary);
-  e.mesh = topology::TetMesh(next, tets);
 }
 
 std::size_t collapse_added_vertices(Embedding& e, std::size_t input_vertices) {

@@ -20,11 +20,8 @@ std::optional<VertexId> try_collapse(Embedding& e, VertexId gone);
 
 // Precondition: no cluster vertex left. `input_vertices`: the ids below it are never removed.
 // Rounds of plain collapses until none is left. Returns the number of vertices removed.
-// Collapsed vertices are left without tets: compact_vertices removes them. Merges, which may
+// Collapsed vertices are left without tets: Embedding::compact_vertices removes them. Merges, which may
 // follow, are in merge_pass.hpp.
 std::size_t collapse_added_vertices(Embedding& e, std::size_t input_vertices);
-
-// Drops added vertices (ids >= input_vertices) that lie in no tet and renumbers the rest in order.
-void compact_vertices(Embedding& e, std::size_t input_vertices);
 
 }  // namespace cmx::algorithm

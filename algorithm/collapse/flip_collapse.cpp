@@ -36,7 +36,7 @@ class FlipSearch {
       std::optional<Choice> c = best_flip();
       if (!c || c->score > best) break;
       failures_ = std::move(c->failures);
-      made_.push_back(topology::apply_flip(e_.mesh, c->plan));
+      made_.push_back(e_.apply_flip(c->plan));
       seen_.insert(key(c->plan.fresh));
       seen_.insert(key(made_.back().removed));  // never undone by a later flip
       best = smallest(failures_);
@@ -45,7 +45,7 @@ class FlipSearch {
       if (std::optional<VertexId> keep = try_collapse(e_, gone_)) return success(*keep, {});
     if (!made_.empty() && remover_)
       if (std::optional<Removal> r = remover_()) return success(r->keep, r->moved);
-    for (auto f = made_.rbegin(); f != made_.rend(); ++f) topology::undo_flip(e_.mesh, *f);
+    for (auto f = made_.rbegin(); f != made_.rend(); ++f) e_.undo_flip(*f);
     return std::nullopt;
   }
 

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "algorithm/collapse/collapse_pass.hpp"
-#include "algorithm/expansion/expansion_cone.hpp"
 #include "algorithm/collapse/flip_collapse.hpp"
-#include "algorithm/map_error.hpp"
 #include "algorithm/collapse/relocating_collapse.hpp"
+#include "algorithm/expansion/expansion_cone.hpp"
+#include "algorithm/map_error.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
 
@@ -37,7 +37,7 @@ class Merger {
       if (!topology::satisfies_link_condition(e_.mesh, keep, gone)) continue;
       const std::optional<HPoint> at = position(false, keep, gone);
       if (!at) continue;
-      if (!topology::collapse_edge(e_.mesh, keep, gone).ok) continue;
+      if (!e_.collapse_edge(keep, gone).ok) continue;
       move(keep, *from, *at);
       return keep;
     }

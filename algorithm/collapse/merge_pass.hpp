@@ -33,7 +33,7 @@ namespace cmx::algorithm {
 inline constexpr double merge_min_float_radius = 1e-11;
 
 struct MergeResult {
-  std::size_t removed = 0;     // vertices left without tets (compact_vertices removes them)
+  std::size_t removed = 0;     // vertices left without tets (Embedding::compact_vertices removes them)
   std::size_t relocating = 0;  // of those, by relocating collapses (relocating_collapse.hpp)
   std::size_t flipping = 0;    // of those, by flip collapses (flip_collapse.hpp)
   bool stopped = false;        // told to stop first: `e` is partly merged (the caller undoes)

@@ -5,9 +5,9 @@
 #include <tuple>
 #include <utility>
 
+#include "algorithm/collapse/merge_pass.hpp"
 #include "algorithm/expansion/expansion_cone.hpp"
 #include "algorithm/map_error.hpp"
-#include "algorithm/collapse/merge_pass.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
 
@@ -176,7 +176,7 @@ std::optional<RelocatingCollapse> try_relocating_collapse(Embedding& e, VertexId
     std::optional<std::vector<VertexId>> moved = r.relocate(keep, gone, movers);
     if (!moved) continue;
     // The link condition holds, so the collapse is made.
-    if (!topology::collapse_edge(e.mesh, keep, gone).ok)
+    if (!e.collapse_edge(keep, gone).ok)
       throw MapError(MapErrorKind::internal, "a collapse satisfying the link condition was refused");
     check_positive_around(e, keep);
     for (VertexId u : *moved) check_positive_around(e, u);

@@ -253,7 +253,7 @@ VertexId ClusterExpander::push(VertexId c, VertexId b) {
 // Collapses a pushed vertex x (still at p_c, in the cluster) back into cluster vertex c: the mesh
 // is exactly as before the push.
 void ClusterExpander::undo_push(VertexId c, VertexId x) {
-  const topology::CollapseResult r = topology::collapse_edge(e_.mesh, c, x);
+  const topology::CollapseResult r = e_.collapse_edge(c, x);
   if (!r.ok) throw MapError(MapErrorKind::internal, "could not undo a push: " + r.message);
   e_.unexpanded[x] = 0;
   --cluster_;
