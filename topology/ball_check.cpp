@@ -104,7 +104,7 @@ Failure face_failure(const TetMesh& m, VertexId a, const std::vector<FaceKey>& k
 // Faces, grouped at their smallest vertex: duplicates, 3+ tets, orientation; fills adj and the
 // face counts of v.
 Failure face_adjacency(const TetMesh& m, BallVerdict& v, Adjacency& adj) {
-  adj.assign(m.tet_capacity(), {invalid_index, invalid_index, invalid_index, invalid_index});
+  adj.assign(m.tet_capacity(), {invalid_tet, invalid_tet, invalid_tet, invalid_tet});
   std::vector<FaceKey> keys;
   std::size_t interior_faces = 0, bfaces = 0;
   for (VertexId a = 0; a < m.num_vertices(); ++a) {

@@ -81,7 +81,7 @@ std::vector<Triangle> chord_path_between_components(const TetMesh& m, const std:
   const TetAdjacency adj = tet_adjacency(m);
   const std::size_t cap = m.tet_capacity();
   std::vector<std::uint32_t> dist(cap, UINT32_MAX);
-  std::vector<std::pair<TetId, int>> from(cap, {invalid_index, -1});
+  std::vector<std::pair<TetId, int>> from(cap, {invalid_tet, -1});
   std::deque<TetId> q;
   for (TetId t : m.live_tets())
     if (component(t) == root) {

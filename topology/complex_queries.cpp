@@ -219,7 +219,7 @@ SubcomplexCounts subcomplex_counts(const TetMesh& m, VertexSubset subset) {
 
 TetAdjacency tet_adjacency(const TetMesh& m) {
   TetAdjacency adj;
-  adj.neighbor.assign(m.tet_capacity(), {invalid_index, invalid_index, invalid_index, invalid_index});
+  adj.neighbor.assign(m.tet_capacity(), {invalid_tet, invalid_tet, invalid_tet, invalid_tet});
   struct Key {
     std::uint64_t other;  // the two larger vertices of the face
     TetId tet;

@@ -27,7 +27,7 @@ TetId TetMesh::add_tet(const Tet& t) {
   for (VertexId v : t) {
     if (v >= vertex_tets_.size()) {
       ++skipped_;
-      return invalid_index;
+      return invalid_tet;
     }
   }
   const auto id = static_cast<TetId>(tets_.size());
@@ -81,7 +81,7 @@ bool TetMesh::set_tet(TetId t, const Tet& vertices) {
 }
 
 std::vector<TetId> TetMesh::compact() {
-  std::vector<TetId> remap(tets_.size(), invalid_index);
+  std::vector<TetId> remap(tets_.size(), invalid_tet);
   std::size_t next = 0;
   for (std::size_t t = 0; t < tets_.size(); ++t) {
     if (!alive_[t]) continue;

@@ -7,13 +7,17 @@
 #include <limits>
 #include <span>
 
+#include "topology/handle.hpp"
+
 namespace cmx::topology {
 
+// A tet's handle is typed (topology/handle.hpp); vertex ids are still plain integers.
 using VertexId = std::uint32_t;
-using TetId = std::uint32_t;
+using TetId = TetHandle;
 
 // Returned where a handle is absent (no such tet, edit refused, ...).
 inline constexpr std::uint32_t invalid_index = std::numeric_limits<std::uint32_t>::max();
+inline constexpr TetHandle invalid_tet{invalid_index};
 
 // A tet lists its vertices in the positive orientation of the source mesh:
 // with positions p, det[p1-p0, p2-p0, p3-p0] > 0.

@@ -13,7 +13,8 @@ namespace cmx::algorithm::stars {
 
 namespace {
 
-std::uint32_t index_in(const std::vector<std::uint32_t>& sorted, std::uint32_t x) {
+template <class Index>
+std::uint32_t index_in(const std::vector<Index>& sorted, Index x) {
   return std::uint32_t(std::lower_bound(sorted.begin(), sorted.end(), x) - sorted.begin());
 }
 

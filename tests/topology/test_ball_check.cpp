@@ -65,9 +65,9 @@ TEST_CASE("ball: inconsistent orientation") {
   CHECK(simplex_is(v, {1, 2, 3}));
   // Flipping one tet of a grid is found too.
   GridComplex g = grid_complex(2, 2, 2);
-  Tet x = g.mesh.tet(13);
+  Tet x = g.mesh.tet(TetId{13});
   std::swap(x[0], x[1]);
-  g.mesh.set_tet(13, x);
+  g.mesh.set_tet(TetId{13}, x);
   CHECK(check_ball(g.mesh).failure == BallFailure::inconsistent_orientation);
 }
 

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <type_traits>
 
 #include "topology/ball_check.hpp"
 #include "topology/complex_queries.hpp"
@@ -121,18 +122,18 @@ TEST_CASE("subcomplex counts: Euler characteristic and components of induced sub
 TEST_CASE("remove_tet tombstones and compact renumbers consistently") {
   GridComplex g = grid_complex(2, 2, 2);
   TetMesh& m = g.mesh;
-  m.remove_tet(5);
-  m.remove_tet(17);
-  m.remove_tet(5);  // no-op
+  m.remove_tet(TetId{5});
+  m.remove_tet(TetId{17});
+  m.remove_tet(TetId{5});  // no-op
   CHECK(m.num_tets() == 46);
   CHECK(m.tet_capacity() == 48);
-  CHECK(!m.is_alive(5));
+  CHECK(!m.is_alive(TetId{5}));
   CHECK(check_incidences(m).ok);
-  const Tet t20 = m.tet(20);
+  const Tet t20 = m.tet(TetId{20});
   const auto remap = m.compact();
   CHECK(remap[5] == invalid_index);
   CHECK(remap[20] == 18);
-  CHECK(m.tet(18) == t20);
+  CHECK(m.tet(TetId{18}) == t20);
   CHECK(m.tet_capacity() == 46);
   CHECK(check_incidences(m).ok);
 }
@@ -144,7 +145,20 @@ TEST_CASE("TetMesh refuses out-of-range edits and stays consistent") {
   CHECK(m.skipped_tets() == 1);
   CHECK(m.add_tet({0, 1, 2, 3}) == 0);
   CHECK(check_incidences(m).ok);
-  CHECK(m.set_tet(0, {0, 1, 3, 2}));
+  CHECK(m.set_tet(TetId{0}, {0, 1, 3, 2}));
   CHECK(check_incidences(m).ok);
-  CHECK(!m.set_tet(0, {0, 1, 3, 9}));
+  CHECK(!m.set_tet(TetId{0}, {0, 1, 3, 9}));
+}
+
+TEST_CASE("A tet handle is made from an index only explicitly and never from another kind") {
+  struct OtherTag {};
+  static_assert(!std::is_convertible_v<std::uint32_t, TetId>);
+  static_assert(std::is_constructible_v<TetId, std::uint32_t>);
+  static_assert(!std::is_constructible_v<TetId, Handle<OtherTag>>);
+  static_assert(std::is_convertible_v<TetId, std::uint32_t>);
+  GridComplex g = grid_complex(1, 1, 1);
+  const TetId t{3};
+  CHECK(t.idx() == 3);
+  CHECK(g.mesh.tet(t) == g.mesh.tet(TetId{3}));
+  CHECK(invalid_tet == invalid_index);
 }
