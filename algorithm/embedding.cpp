@@ -66,7 +66,7 @@ void Embedding::compact_vertices(std::size_t input_vertices) {
   if (properties.live() != 0)
     throw MapError(MapErrorKind::internal, "compact_vertices: per-vertex properties are still live");
   const std::size_t n = num_vertices();
-  std::vector<VertexId> new_id(n, topology::invalid_index);
+  std::vector<VertexId> new_id(n, topology::invalid_vertex);
   std::size_t next = 0;
   for (std::size_t v = 0; v < n; ++v)
     if (v < input_vertices || !mesh.tets_of(VertexId(v)).empty()) new_id[v] = VertexId(next++);

@@ -170,7 +170,7 @@ std::variant<algorithm::MapProblem, Failure> make_problem(std::span<const P> ver
   const auto position_name = [&](std::size_t i) { return "boundary position of " + vertex_name(ids[i]); };
   if (auto f = exact_points(positions, position_name, p.boundary_positions)) return *f;
   p.tets.reserve(tets.size());
-  for (const Tet& t : tets) p.tets.push_back({t[0], t[1], t[2], t[3]});
+  for (const Tet& t : tets) p.tets.push_back(topology::make_tet(t));
   p.boundary_vertices.assign(ids.begin(), ids.end());
   if (auto f = initial_target(o, vertices.size(), p)) return *f;
   return p;
@@ -197,7 +197,7 @@ ExactPoint3 exact_text(const HPoint& p) {
 // The output arrays and verdicts of a successful run.
 void fill_output(const algorithm::MapResult& in, MapResult& out) {
   out.tets.reserve(in.tets.size());
-  for (const auto& t : in.tets) out.tets.push_back({t[0], t[1], t[2], t[3]});
+  for (const auto& t : in.tets) out.tets.push_back(topology::indices_of(t));
   const std::size_t n = in.target.size();
   out.source_exact.reserve(n);
   out.target_exact.reserve(n);
@@ -367,7 +367,7 @@ std::vector<std::uint32_t> boundary_vertices(std::span<const Tet> tets, std::siz
       if (v >= vertex_count)
         throw Error("tet " + std::to_string(i) + ": vertex " + std::to_string(v) + " out of range (" +
                     std::to_string(vertex_count) + " vertices)");
-    ts.push_back({tets[i][0], tets[i][1], tets[i][2], tets[i][3]});
+    ts.push_back(topology::make_tet(tets[i]));
   }
   const topology::TetMesh mesh(vertex_count, ts);
   std::vector<std::uint32_t> out;
@@ -386,7 +386,7 @@ ShapeBoundary boundary_for_shape(std::span<const Point3d> vertices, std::span<co
   for (const Tet& t : tets) {
     for (const std::uint32_t v : t)
       if (v >= vertices.size()) throw Error("tet names vertex " + std::to_string(v) + ", out of range");
-    ts.push_back({t[0], t[1], t[2], t[3]});
+    ts.push_back(topology::make_tet(t));
   }
   const topology::TetMesh mesh(vertices.size(), ts);
   if (const auto ball = topology::check_ball(mesh); !ball.ok) throw Error("not a ball: " + ball.message);

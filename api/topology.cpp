@@ -62,7 +62,7 @@ std::vector<std::array<std::uint32_t, 3>> boundary_faces(std::span<const Tet> te
   std::vector<std::array<std::uint32_t, 3>> out;
   for (const topology::BoundaryFace& f :
        topology::boundary_faces(indexed_mesh("boundary_faces", tets, vertex_count)))
-    out.push_back(f.face);
+    out.push_back(topology::indices_of(f.face));
   return out;
 }
 
@@ -74,7 +74,7 @@ bool is_expandable(std::span<const Tet> tets, std::size_t vertex_count,
   if (vertex >= unexpanded.size() || !unexpanded[vertex])
     throw Error("is_expandable: vertex " + std::to_string(vertex) + " is not a cluster vertex");
   topology::ClusterLinkWorkspace workspace;
-  return topology::is_topologically_expandable(mesh, vertex, unexpanded, workspace);
+  return topology::is_topologically_expandable(mesh, topology::VertexId{vertex}, unexpanded, workspace);
 }
 
 TopologicalExpansion expand_topologically(std::span<const Tet> tets, std::size_t vertex_count,
@@ -90,8 +90,8 @@ TopologicalExpansion expand_topologically(std::span<const Tet> tets, std::size_t
   topology::TopologicalExpansionResult r = topology::topological_expansion(mesh, *parsed, unexpanded);
   TopologicalExpansion out;
   out.complete = !r.stuck;
-  out.sequence = std::move(r.sequence);
-  out.remaining = std::move(r.remaining);
+  out.sequence = topology::indices_of<topology::VertexTag>(r.sequence);
+  out.remaining = topology::indices_of<topology::VertexTag>(r.remaining);
   out.initially_simply_connected = initial.vertices == 0 || (initial.components == 1 && initial.euler == 1);
   return out;
 }

@@ -151,7 +151,7 @@ int run(const std::vector<std::string>& args) {
   generators::GeneratedDomain domain = generate(a);
   io::TetMeshData data;
   data.positions = std::move(domain.positions);
-  for (auto t : domain.mesh.live_tets()) data.tets.push_back(domain.mesh.tet(t));
+  for (auto t : domain.mesh.live_tets()) data.tets.push_back(topology::indices_of(domain.mesh.tet(t)));
   io::write_tet_mesh(a.output, data);
   note("wrote " + a.output + ": " + std::to_string(data.positions.size()) + " vertices, " + std::to_string(data.tets.size()) +
        " tets");

@@ -271,7 +271,10 @@ std::vector<ExactPoint3> exact_text(const std::vector<cmx::Point3>& points) {
 }
 
 ExactProblem exact_problem(const algorithm::MapProblem& p) {
-  return ExactProblem{exact_text(p.source), exact_text(p.boundary_positions), {p.tets.begin(), p.tets.end()}};
+  ExactProblem out{exact_text(p.source), exact_text(p.boundary_positions), {}};
+  out.tets.reserve(p.tets.size());
+  for (const topology::Tet& t : p.tets) out.tets.push_back(topology::indices_of(t));
+  return out;
 }
 
 InitialMap public_init(algorithm::InitialMapKind k) {

@@ -43,7 +43,7 @@ algorithm::MapProblem load_map_problem(const std::string& domain_path, const std
   else if (!codomain_path.empty()) b = io::read_boundary_positions_from_codomain(mesh, codomain_path);
   else b = generated_boundary(mesh, shape, seed);
   algorithm::MapProblem p;
-  p.tets = std::move(mesh.tets);
+  p.tets = topology::make_tets(mesh.tets);
   p.source = std::move(mesh.positions);
   p.boundary_vertices = std::move(b.vertices);
   p.boundary_positions = std::move(b.positions);

@@ -48,6 +48,10 @@ template <std::integral T>
 void append_part(std::string& out, T number) {
   out += std::to_string(number);
 }
+template <class Tag>
+void append_part(std::string& out, topology::Handle<Tag> handle) {
+  out += std::to_string(handle.idx());
+}
 template <class... Parts>
 std::string text(const Parts&... parts) {
   std::string out;
@@ -99,7 +103,7 @@ std::string build_surface(const topology::TetMesh& mesh, Surface& s) {
   // Each undirected edge must be in exactly two faces, once in each direction.
   std::vector<std::array<std::uint32_t, 3>> directed;  // (min, max, 1 when listed min -> max)
   for (const auto& f : faces) {
-    topology::Triangle t{s.local[f.face[0]], s.local[f.face[1]], s.local[f.face[2]]};
+    topology::Triangle t{topology::VertexId{s.local[f.face[0]]}, topology::VertexId{s.local[f.face[1]]}, topology::VertexId{s.local[f.face[2]]}};
     s.faces.push_back(t);
     for (int i = 0; i < 3; ++i) {
       const auto a = t[std::size_t(i)], b = t[std::size_t((i + 1) % 3)];

@@ -58,7 +58,7 @@ void perturb(GeneratedDomain& d, std::uint64_t seed, double amplitude) {
   std::vector<HPoint> points;
   points.reserve(d.positions.size());
   for (const auto& p : d.positions) points.emplace_back(p[0], p[1], p[2]);
-  for (topology::VertexId v = 0; v < d.positions.size(); ++v) {
+  for (topology::VertexId v{0}; v < d.positions.size(); ++v) {
     std::array<Rational, 3> moved = d.positions[v];
     for (auto& x : moved) {
       const auto k = static_cast<std::int64_t>(rng() >> (64 - jitter_bits));  // uniform below 2^17

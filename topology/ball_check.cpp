@@ -41,7 +41,7 @@ Failure tet_failure(const TetMesh& m, const std::vector<TetId>& live, const Ball
           return fail(v, BallFailure::degenerate_tet, {x.begin(), x.end()},
                       "tet " + std::to_string(t) + " " + ids(x) + " repeats vertex " + std::to_string(x[i]));
   }
-  for (VertexId a = 0; a < m.num_vertices(); ++a)
+  for (VertexId a{0}; a < m.num_vertices(); ++a)
     if (m.tets_of(a).empty())
       return fail(v, BallFailure::isolated_vertex, {a}, "vertex " + std::to_string(a) + " is used by no tet");
   return std::nullopt;
@@ -107,7 +107,7 @@ Failure face_adjacency(const TetMesh& m, BallVerdict& v, Adjacency& adj) {
   adj.assign(m.tet_capacity(), {invalid_tet, invalid_tet, invalid_tet, invalid_tet});
   std::vector<FaceKey> keys;
   std::size_t interior_faces = 0, bfaces = 0;
-  for (VertexId a = 0; a < m.num_vertices(); ++a) {
+  for (VertexId a{0}; a < m.num_vertices(); ++a) {
     faces_at(m, a, keys);
     for (std::size_t i = 0; i < keys.size();) {
       std::size_t j = i;
@@ -135,7 +135,7 @@ Failure disconnection(const TetMesh& m, const std::vector<TetId>& live, const Ba
   for (TetId t : live)
     for (int i = 1; i < 4; ++i) uf.unite(m.tet(t)[0], m.tet(t)[i]);
   const std::uint32_t root = uf.find(m.tet(live.front())[0]);
-  for (VertexId a = 0; a < m.num_vertices(); ++a)
+  for (VertexId a{0}; a < m.num_vertices(); ++a)
     if (uf.find(a) != root)
       return fail(v, BallFailure::disconnected, {a},
                   "vertex " + std::to_string(a) + " is not connected to vertex " +
@@ -230,7 +230,7 @@ Failure edge_failure(const TetMesh& m, const Adjacency& adj, VertexId a, const s
 // link a disc (boundary vertex) or a sphere (interior). Counts the edges.
 Failure vertex_star_failure(const TetMesh& m, const Adjacency& adj, const BallVerdict& v, std::size_t& edges) {
   std::vector<TetId> star;
-  for (VertexId a = 0; a < m.num_vertices(); ++a) {
+  for (VertexId a{0}; a < m.num_vertices(); ++a) {
     const auto ts = m.tets_of(a);
     star.assign(ts.begin(), ts.end());
     std::sort(star.begin(), star.end());
@@ -270,9 +270,9 @@ Failure boundary_sphere_failure(const TetMesh& m, const std::vector<TetId>& live
   v.boundary_vertices = bverts;
   v.boundary_euler = static_cast<std::int64_t>(bverts) - static_cast<std::int64_t>(v.boundary_faces) / 2;
   if (bcomps != 1) {
-    VertexId other = 0;
+    VertexId other{0};
     std::uint32_t first_root = invalid_index;
-    for (VertexId a = 0; a < m.num_vertices() && !other; ++a) {
+    for (VertexId a{0}; a < m.num_vertices() && !other; ++a) {
       if (!on_boundary[a]) continue;
       if (first_root == invalid_index) first_root = uf.find(a);
       else if (uf.find(a) != first_root) other = a;

@@ -9,6 +9,7 @@
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
+#include "topology/union_find.hpp"
 
 namespace cmx::topology {
 
@@ -23,7 +24,7 @@ bool all_boundary(const std::vector<char>& boundary, const Triangle& f) {
 }
 
 VertexId split_edge(ChordContext& c, VertexId a, VertexId b) {
-  return c.split(a, b, invalid_index);
+  return c.split(a, b, invalid_vertex);
 }
 
 // Every edge between two boundary vertices, sorted.
@@ -55,27 +56,23 @@ std::vector<Triangle> trace(const TetMesh& m, const std::vector<char>& boundary,
 // vertex to a tet of another component.
 std::vector<Triangle> chord_path_between_components(const TetMesh& m, const std::vector<char>& boundary,
                                                     const std::vector<char>& interior) {
-  std::vector<VertexId> parent(m.num_vertices());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&](VertexId x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  VertexId first = invalid_index;
+  UnionFind components(m.num_vertices());
+  VertexId first = invalid_vertex;
   for (TetId t : m.live_tets()) {
-    VertexId prev = invalid_index;
+    VertexId prev = invalid_vertex;
     for (VertexId w : m.tet(t))
       if (interior[w]) {
-        if (first == invalid_index) first = w;
-        if (prev != invalid_index) parent[find(w)] = find(prev);
+        if (first == invalid_vertex) first = w;
+        if (prev != invalid_vertex) components.unite(w, prev);
         prev = w;
       }
   }
-  if (first == invalid_index) return {};
-  const VertexId root = find(first);
-  auto component = [&](TetId t) -> VertexId {
+  if (first == invalid_vertex) return {};
+  const std::uint32_t root = components.find(first);
+  // The representative of the interior component t touches (invalid_index: none).
+  auto component = [&](TetId t) -> std::uint32_t {
     for (VertexId w : m.tet(t))
-      if (interior[w]) return find(w);
+      if (interior[w]) return components.find(w);
     return invalid_index;
   };
   const TetAdjacency adj = tet_adjacency(m);
@@ -91,7 +88,7 @@ std::vector<Triangle> chord_path_between_components(const TetMesh& m, const std:
   while (!q.empty()) {
     const TetId t = q.front();
     q.pop_front();
-    const VertexId c = component(t);
+    const std::uint32_t c = component(t);
     if (c != invalid_index && c != root) return trace(m, boundary, t, from);
     for (int i = 0; i < 4; ++i) {
       const TetId u = adj.neighbor[t][i];

@@ -180,7 +180,7 @@ SubcomplexCounts subcomplex_counts(const TetMesh& m, VertexSubset subset) {
   UnionFind uf(n);
   std::vector<VertexId> nbrs;
   std::vector<std::uint64_t> faces;
-  for (VertexId a = 0; a < n; ++a) {
+  for (VertexId a{0}; a < n; ++a) {
     if (m.tets_of(a).empty() || !subset.contains(a)) continue;
     ++c.vertices;
     nbrs.clear();
@@ -210,7 +210,7 @@ SubcomplexCounts subcomplex_counts(const TetMesh& m, VertexSubset subset) {
     c.triangles += faces.size();
     for (VertexId w : nbrs) uf.unite(a, w);
   }
-  for (VertexId a = 0; a < n; ++a)
+  for (VertexId a{0}; a < n; ++a)
     if (!m.tets_of(a).empty() && subset.contains(a) && uf.find(a) == a) ++c.components;
   c.euler = static_cast<std::int64_t>(c.vertices) - static_cast<std::int64_t>(c.edges) +
             static_cast<std::int64_t>(c.triangles) - static_cast<std::int64_t>(c.tets);
@@ -226,7 +226,7 @@ TetAdjacency tet_adjacency(const TetMesh& m) {
     std::uint8_t local;
   };
   std::vector<Key> keys;
-  for (VertexId a = 0; a < m.num_vertices(); ++a) {
+  for (VertexId a{0}; a < m.num_vertices(); ++a) {
     keys.clear();
     for (TetId t : m.tets_of(a)) {
       const Tet& tet = m.tet(t);
@@ -279,7 +279,7 @@ std::vector<char> boundary_vertex_flags(const TetMesh& m) {
 
 std::vector<char> interior_vertex_flags(const TetMesh& m) {
   std::vector<char> flags = boundary_vertex_flags(m);
-  for (VertexId v = 0; v < m.num_vertices(); ++v)
+  for (VertexId v{0}; v < m.num_vertices(); ++v)
     flags[v] = (flags[v] == 0 && !m.tets_of(v).empty()) ? 1 : 0;
   return flags;
 }

@@ -33,7 +33,7 @@ ConsistencyVerdict check_incidences(const TetMesh& m) {
   }
   if (live != m.num_tets()) return bad("live tet count mismatch");
   std::size_t entries = 0;
-  for (VertexId a = 0; a < m.num_vertices(); ++a) {
+  for (VertexId a{0}; a < m.num_vertices(); ++a) {
     for (TetId t : m.tets_of(a)) {
       ++entries;
       if (!m.is_alive(t)) return bad("vertex " + std::to_string(a) + " lists dead tet " + std::to_string(t));

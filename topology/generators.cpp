@@ -72,7 +72,7 @@ GridComplex voxel_complex(std::uint32_t nx, std::uint32_t ny, std::uint32_t nz, 
         cell_tets(static_cast<std::int32_t>(i), static_cast<std::int32_t>(j), static_cast<std::int32_t>(k), tri, local);
         for (const auto& t : local) {
           Tet x;
-          for (int a = 0; a < 4; ++a) x[a] = id[gid(t[a][0], t[a][1], t[a][2])];
+          for (int a = 0; a < 4; ++a) x[a] = VertexId{id[gid(t[a][0], t[a][1], t[a][2])]};
           tets.push_back(x);
         }
       }
@@ -85,14 +85,12 @@ GridComplex grid_complex(std::uint32_t nx, std::uint32_t ny, std::uint32_t nz, G
 }
 
 TetMesh single_tet() {
-  const std::array<Tet, 1> t{{{0, 1, 2, 3}}};
-  return TetMesh(4, t);
+  return TetMesh(4, make_tets({{0, 1, 2, 3}}));
 }
 
 TetMesh two_tets_sharing_face() {
   // Vertex 4 at (1,1,1) lies beyond face (1,2,3): det[2-1, 3-1, 4-1] = 2 > 0.
-  const std::array<Tet, 2> t{{{0, 1, 2, 3}, {1, 2, 3, 4}}};
-  return TetMesh(5, t);
+  return TetMesh(5, make_tets({{0, 1, 2, 3}, {1, 2, 3, 4}}));
 }
 
 }  // namespace cmx::topology

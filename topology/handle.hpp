@@ -30,8 +30,20 @@ class Handle {
   std::uint32_t index_ = 0;
 };
 
+struct VertexTag {};
 struct TetTag {};
+using VertexHandle = Handle<VertexTag>;
 using TetHandle = Handle<TetTag>;
+
+// Literals for hand-built meshes (tests, examples): `vertex_link(m, 0_v)`, `m.tet(2_tet)`.
+namespace literals {
+constexpr VertexHandle operator""_v(unsigned long long index) {
+  return VertexHandle{static_cast<std::uint32_t>(index)};
+}
+constexpr TetHandle operator""_tet(unsigned long long index) {
+  return TetHandle{static_cast<std::uint32_t>(index)};
+}
+}  // namespace literals
 
 }  // namespace cmx::topology
 

@@ -184,7 +184,7 @@ FlipPlan plan_flip_23(const TetMesh& m, VertexId a, VertexId b, VertexId c) {
     return r;
   }
   const Tet& first = m.tet(r.old[0]);
-  VertexId d = invalid_index, e = invalid_index;
+  VertexId d = invalid_vertex, e = invalid_vertex;
   for (VertexId v : first)
     if (v != a && v != b && v != c) d = v;
   for (VertexId v : m.tet(r.old[1]))
@@ -222,7 +222,7 @@ FlipPlan plan_flip_32(const TetMesh& m, VertexId d, VertexId e) {
     r.message = "the ring is not three vertices (a boundary edge)";
     return r;
   }
-  VertexId third = invalid_index;
+  VertexId third = invalid_vertex;
   for (VertexId v : ring)
     if (v != p && v != q) third = v;
   if (!tets_around_face(m, p, q, third).empty()) {

@@ -16,7 +16,7 @@ namespace cmx::topology {
 
 struct SplitResult {
   bool ok = false;
-  VertexId new_vertex = invalid_index;
+  VertexId new_vertex = invalid_vertex;
   std::vector<TetId> modified;  // old handles, now one part each (they contain new_vertex)
   std::vector<TetId> created;   // new handles (they contain new_vertex)
   std::string message;          // why it was refused

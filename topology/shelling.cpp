@@ -19,7 +19,7 @@ bool face_shared(const TetAdjacency& adj, TetId t, int i, const std::vector<char
 }
 
 bool on_boundary_of_remaining(const TetMesh& m, const TetAdjacency& adj, const std::vector<char>& remaining,
-                              VertexId a, VertexId b /* invalid_index for a vertex */) {
+                              VertexId a, VertexId b /* invalid_vertex for a vertex */) {
   for (TetId o : m.tets_of(a)) {
     if (o >= remaining.size() || !remaining[o]) continue;
     const Tet& x = m.tet(o);
@@ -31,7 +31,7 @@ bool on_boundary_of_remaining(const TetMesh& m, const TetAdjacency& adj, const s
 }
 
 std::size_t others_containing(const TetMesh& m, TetId t, const std::vector<char>& remaining, VertexId a,
-                              VertexId b /* invalid_index for a vertex */) {
+                              VertexId b /* invalid_vertex for a vertex */) {
   std::size_t n = 0;
   for (TetId o : m.tets_of(a)) {
     if (o == t || o >= remaining.size() || !remaining[o]) continue;
@@ -62,8 +62,8 @@ bool is_shelling_removable(const TetMesh& m, const TetAdjacency& adj, TetId t, c
     bool in_free = false, in_shared = false;
     for (int i = 0; i < 4; ++i)
       if (i != k) (sh[i] ? in_shared : in_free) = true;
-    if (!in_free && on_boundary_of_remaining(m, adj, remaining, x[k], invalid_index)) return false;
-    if (!in_shared && others_containing(m, t, remaining, x[k], invalid_index) > 0) return false;
+    if (!in_free && on_boundary_of_remaining(m, adj, remaining, x[k], invalid_vertex)) return false;
+    if (!in_shared && others_containing(m, t, remaining, x[k], invalid_vertex) > 0) return false;
     for (int l = k + 1; l < 4; ++l) {
       bool e_free = false, e_shared = false;
       for (int i = 0; i < 4; ++i)
@@ -164,7 +164,7 @@ ShellingExpansion shelling_to_expansion_sequence(const TetMesh& input, const std
         if (sh[i]) e[n++] = x[i];
       const SplitResult sr = split_edge(m, e[0], e[1]);
       step.kind = ExpansionStepKind::edge_split;
-      step.split = {e[0], e[1], invalid_index};
+      step.split = {e[0], e[1], invalid_vertex};
       step.vertex = sr.new_vertex;
     } else {
       int free_face = 0;

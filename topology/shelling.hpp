@@ -58,8 +58,8 @@ enum class ExpansionStepKind : std::uint8_t { plain_vertex, edge_split, face_spl
 struct ExpansionStep {
   ExpansionStepKind kind = ExpansionStepKind::plain_vertex;
   TetId cell = invalid_tet;   // the shelling cell this step removes (input handle)
-  std::array<VertexId, 3> split{invalid_index, invalid_index, invalid_index};
-  VertexId vertex = invalid_index;  // the vertex expanded
+  std::array<VertexId, 3> split{invalid_vertex, invalid_vertex, invalid_vertex};
+  VertexId vertex = invalid_vertex;  // the vertex expanded
   bool automatic = false;           // the very last vertex (expanded with the second-last)
 };
 

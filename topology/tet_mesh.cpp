@@ -6,6 +6,9 @@ namespace cmx::topology {
 
 TetMesh::TetMesh(std::size_t num_vertices) : vertex_tets_(num_vertices) {}
 
+TetMesh::TetMesh(std::size_t num_vertices, std::span<const TetIndices> tets)
+    : TetMesh(num_vertices, make_tets(tets)) {}
+
 TetMesh::TetMesh(std::size_t num_vertices, std::span<const Tet> tets) : vertex_tets_(num_vertices) {
   tets_.reserve(tets.size());
   alive_.reserve(tets.size());

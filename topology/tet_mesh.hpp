@@ -22,6 +22,8 @@ class TetMesh {
   // skipped (and counted by skipped_tets()), never stored. Repeated vertices inside one tet are
   // stored as is (check_ball reports them).
   TetMesh(std::size_t num_vertices, std::span<const Tet> tets);
+  // The same from integer vertex indices (a reader's or a caller's tet list).
+  TetMesh(std::size_t num_vertices, std::span<const TetIndices> tets);
 
   [[nodiscard]] std::size_t num_vertices() const { return vertex_tets_.size(); }
   [[nodiscard]] std::size_t num_tets() const { return live_tets_; }       // live tets

@@ -69,7 +69,7 @@ std::vector<char> initial_cluster(const TetMesh& m, std::span<const char> initia
 std::vector<std::uint64_t> random_ranks(std::size_t n, std::uint64_t seed) {
   std::vector<std::uint64_t> rank(n);
   std::vector<VertexId> perm(n);
-  std::iota(perm.begin(), perm.end(), 0u);
+  std::iota(perm.begin(), perm.end(), VertexId{0});
   std::mt19937_64 rng(seed);
   for (std::size_t i = n; i > 1; --i) std::swap(perm[i - 1], perm[bounded(rng, i)]);
   for (std::size_t i = 0; i < n; ++i) rank[perm[i]] = i;
@@ -88,7 +88,7 @@ class GreedyExpansion {
   }
 
   TopologicalExpansionResult run() {
-    for (VertexId v = 0; v < m_.num_vertices(); ++v)
+    for (VertexId v{0}; v < m_.num_vertices(); ++v)
       if (unexp_[v]) evaluate(v);
     drain_automatic();
     while (cluster_ > 0) {
@@ -163,7 +163,7 @@ class GreedyExpansion {
   }
 
   void report_remaining() {
-    for (VertexId v = 0; v < m_.num_vertices(); ++v)
+    for (VertexId v{0}; v < m_.num_vertices(); ++v)
       if (unexp_[v]) r_.remaining.push_back(v);
     const SubcomplexCounts c = subcomplex_counts(m_, VertexSubset(unexp_));
     r_.remaining_euler = c.euler;

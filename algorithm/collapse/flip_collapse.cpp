@@ -93,12 +93,12 @@ class FlipSearch {
   // The neighbour a plan takes out of gone's link: for a 3-2 flip, the far end of the flipped
   // edge (in the new tet without gone, not in the one with it); none for a 2-3 flip.
   VertexId leaving(const topology::FlipPlan& plan) const {
-    if (plan.fresh.size() != 2) return topology::invalid_index;
+    if (plan.fresh.size() != 2) return topology::invalid_vertex;
     const bool first_has_gone = topology::contains(plan.fresh[0], gone_);
     const Tet& with = plan.fresh[first_has_gone ? 0 : 1];
     for (VertexId v : plan.fresh[first_has_gone ? 1 : 0])
       if (!topology::contains(with, v)) return v;
-    return topology::invalid_index;
+    return topology::invalid_vertex;
   }
 
   // The failure counts once the plan is made, from the counts before it (a flip of gone's star

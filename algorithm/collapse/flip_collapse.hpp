@@ -36,7 +36,7 @@ inline constexpr std::size_t flip_collapse_max_flips = 30;
 inline constexpr std::size_t flip_collapse_max_failures = 8;
 
 struct FlipCollapse {
-  VertexId keep = 0;
+  VertexId keep{0};
   std::size_t flips = 0;
   std::vector<VertexId> touched;  // the vertices moved and those of the tets the flips made, but gone (sorted)
 };
@@ -47,7 +47,7 @@ struct FlipCollapse {
 // merge pass passes its merges and relocating collapses, which move vertices): the neighbour kept
 // and the vertices moved, or nullopt with nothing changed.
 struct Removal {
-  VertexId keep = 0;
+  VertexId keep{0};
   std::vector<VertexId> moved;
 };
 using Remover = std::function<std::optional<Removal>()>;

@@ -21,7 +21,7 @@
 namespace cmx::algorithm {
 
 struct RelocatingCollapse {
-  VertexId keep = 0;
+  VertexId keep{0};
   std::vector<VertexId> movers;  // the added vertices that moved (at least one)
 };
 

@@ -40,7 +40,7 @@ std::vector<std::pair<double, VertexId>> by_distance(const Embedding& e,
 
 std::vector<VertexId> interior_vertices(const Embedding& e) {
   std::vector<VertexId> out;
-  for (VertexId v = 0; v < e.num_vertices(); ++v)
+  for (VertexId v{0}; v < e.num_vertices(); ++v)
     if (!e.boundary[v] && !e.mesh.tets_of(v).empty()) out.push_back(v);
   return out;
 }
@@ -125,7 +125,7 @@ std::size_t scale_crowds(Embedding& e) {
 
 std::vector<VertexId> crowd_around_center(const Embedding& e) {
   double extent = -std::numeric_limits<double>::infinity();
-  for (VertexId v = 0; v < e.num_vertices(); ++v)
+  for (VertexId v{0}; v < e.num_vertices(); ++v)
     if (e.boundary[v] && !e.mesh.tets_of(v).empty())
       extent = std::max(extent, log2_distance(e.center, e.target[v]));
   std::vector<VertexId> out = interior_vertices(e);  // ascending ids

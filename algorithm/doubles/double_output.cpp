@@ -26,7 +26,7 @@ std::size_t bad_tets(const DoubleCheck& c) {
 
 ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options, RunControl* control) {
   ChebyshevPassResult r;
-  for (VertexId v = 0; v < e.num_vertices(); ++v) {
+  for (VertexId v{0}; v < e.num_vertices(); ++v) {
     if (e.boundary[v] || e.unexpanded[v] || e.mesh.tets_of(v).empty()) continue;
     if (control && control->step("doubles", v, e.num_vertices())) break;
     ++r.lps;

@@ -299,7 +299,7 @@ void ClusterExpander::collapse_added_since(std::size_t first) {
     const std::optional<VertexId> keep = try_collapse(e_, VertexId(g));
     if (!keep) continue;
     ++stats_.refinement_collapses;
-    ++version_[g];
+    ++version_[VertexId(g)];
     dirty_star(*keep);
     if (s_.check) check_all("after collapsing vertex " + std::to_string(g));
   }

@@ -32,7 +32,7 @@
 namespace cmx::algorithm::detail {
 
 ExpansionOutcome ClusterExpander::run() {
-  for (VertexId v = 0; v < e_.num_vertices(); ++v)
+  for (VertexId v{0}; v < e_.num_vertices(); ++v)
     if (e_.unexpanded[v]) {
       ++cluster_;
       dirty(v);
@@ -48,7 +48,7 @@ ExpansionOutcome ClusterExpander::run() {
       // only when nothing else is left).
       if (aggressive_ || failures_ == 0) return stuck();
       aggressive_ = true;
-      for (VertexId v = 0; v < e_.num_vertices(); ++v)
+      for (VertexId v{0}; v < e_.num_vertices(); ++v)
         if (e_.unexpanded[v]) dirty(v);
       flush_dirty();
       continue;

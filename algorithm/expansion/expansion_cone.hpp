@@ -23,7 +23,7 @@
 namespace cmx::algorithm {
 
 struct ExpansionCone {
-  VertexId apex = topology::invalid_index;
+  VertexId apex = topology::invalid_vertex;
   std::vector<InnerHalfSpace> halfspaces;  // strict: u . x < w
   std::size_t base_tets = 0;
   std::size_t side_tets = 0;

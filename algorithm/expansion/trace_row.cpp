@@ -10,7 +10,7 @@ TraceRow state_row(const Embedding& e, std::size_t input_vertices) {
   TraceRow row;
   double total = 0;
   std::size_t live = 0;
-  for (VertexId w = 0; w < e.num_vertices(); ++w) {
+  for (VertexId w{0}; w < e.num_vertices(); ++w) {
     if (e.mesh.tets_of(w).empty()) continue;
     const std::size_t b = e.target[w].bit_size();
     row.max_bits = std::max(row.max_bits, b);

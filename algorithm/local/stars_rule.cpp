@@ -156,12 +156,12 @@ bool StarGrowth::repair(TetId t) {
 // tets around it (the fold it sits in), then the fewest tets still outside the star, then the
 // smallest handle. invalid_index when the defect has an interior vertex already or none can be.
 VertexId StarGrowth::vertex_to_free(TetId defect) const {
-  VertexId best = topology::invalid_index;
+  VertexId best = topology::invalid_vertex;
   std::size_t best_folded = 0, best_missing = 0;
   for (VertexId v : mesh_.tet(defect)) {
     if (fixed_[v]) continue;
     const std::size_t missing = mesh_.tets_of(v).size() - star_.vertex_tets(v);
-    if (missing == 0) return topology::invalid_index;
+    if (missing == 0) return topology::invalid_vertex;
     std::size_t folded = 0;
     for (TetId t : mesh_.tets_of(v)) folded += out_.states[t] != TetState::positive ? 1 : 0;
     const bool better = best == topology::invalid_index || folded > best_folded ||

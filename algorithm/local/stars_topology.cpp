@@ -3,7 +3,7 @@
 namespace cmx::algorithm::stars {
 
 topology::BallVerdict check_ball_of(const topology::TetMesh& mesh, const std::vector<topology::TetId>& tets) {
-  std::vector<topology::VertexId> local(mesh.num_vertices(), topology::invalid_index), global;
+  std::vector<topology::VertexId> local(mesh.num_vertices(), topology::invalid_vertex), global;
   std::vector<topology::Tet> renumbered;
   renumbered.reserve(tets.size());
   for (topology::TetId t : tets) {

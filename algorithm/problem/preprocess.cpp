@@ -127,7 +127,7 @@ class Preprocessor {
       const TetId t = work.front();
       work.pop_front();
       if (!e_.mesh.is_alive(t)) continue;
-      VertexId m = topology::invalid_index;
+      VertexId m = topology::invalid_vertex;
       if (!fix_tet(t, m)) continue;
       ++splits;
       for (TetId n : e_.mesh.tets_of(m)) work.push_back(n);
@@ -252,7 +252,7 @@ class Preprocessor {
       loss.exact_bits = lp::point_bits(few.point);
       throw PrecisionLost(std::move(loss));
     }
-    for (VertexId v = 0; v < e_.num_vertices(); ++v)
+    for (VertexId v{0}; v < e_.num_vertices(); ++v)
       if (e_.unexpanded[v]) e_.target[v] = e_.center;
   }
 

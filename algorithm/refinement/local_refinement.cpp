@@ -122,7 +122,7 @@ bool ClusterExpander::bend_and_expand(VertexId v, int k) {
       return false;
     }
     std::optional<HPoint> q;
-    VertexId b = 0;
+    VertexId b{0};
     const auto bl = blockers(v, aim);
     // Fix both boundary edges at a blocker if possible, else one, else move it inward.
     for (int level = 0; level < 3 && !q; ++level)

@@ -33,7 +33,7 @@ std::optional<InvalidTet> first_invalid_tet_around(const Embedding& e, VertexId 
 
 std::string check_invariants(const Embedding& e, const std::vector<HPoint>& prescribed) {
   std::size_t cluster = 0;
-  for (VertexId v = 0; v < e.num_vertices(); ++v) {
+  for (VertexId v{0}; v < e.num_vertices(); ++v) {
     if (e.unexpanded[v]) {
       ++cluster;
       if (!(e.target[v] == e.center)) return "cluster vertex " + std::to_string(v) + " is not at p_c";

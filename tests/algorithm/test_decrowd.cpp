@@ -85,7 +85,7 @@ TEST_CASE("a crowd shrunk far below double resolution is scaled back open about 
   CHECK(distance_from_center(e, a) > 1e-10);
   CHECK(distance_from_center(e, b) > 1e-10);
   CHECK(bad_doubles(e) == 0);
-  for (VertexId v = 0; v < e.num_vertices(); ++v)
+  for (VertexId v{0}; v < e.num_vertices(); ++v)
     if (e.boundary[v]) CHECK(e.target[v] == r.target[v]);
   // Deterministic: the same crowd opens the same way.
   Embedding again = embedding_of(r);
@@ -113,7 +113,7 @@ TEST_CASE("a sweep re-centres a vertex pushed into p_c back out, outermost first
   // An interior vertex whose star's kernel holds p_c: moving it 2^-300 of the way to p_c keeps
   // its star positive (the kernel is convex).
   std::optional<VertexId> pushed;
-  for (VertexId v = 0; v < e.num_vertices() && !pushed; ++v)
+  for (VertexId v{0}; v < e.num_vertices() && !pushed; ++v)
     if (!e.boundary[v] && strictly_inside(gather_expansion_cone(e, v), e.center)) pushed = v;
   REQUIRE(pushed);
   e.target[*pushed] = toward_center(e, e.target[*pushed], 300);

@@ -147,7 +147,7 @@ CrowdedMap crowded_map() {
   e.unexpanded.assign(r.target.size(), 0);
   e.boundary = topology::boundary_vertex_flags(e.mesh);
   bool crowded = false;
-  for (VertexId v = 0; v < e.num_vertices() && !crowded; ++v) {
+  for (VertexId v{0}; v < e.num_vertices() && !crowded; ++v) {
     if (e.boundary[v]) continue;
     const ExpansionCone cone = gather_expansion_cone(e, v);
     for (TetId t : e.mesh.tets_of(v)) {
@@ -243,7 +243,7 @@ TEST_CASE("a crowded map's repair separates the flattened tets and keeps the exa
   CHECK(recount(r.tets, mended.target).degenerate == 0);
   // The exact map is still valid after the exact moves repair made.
   for (TetId t : e.mesh.live_tets()) CHECK(e.orient_target(e.mesh.tet(t)) == Sign::positive);
-  for (VertexId v = 0; v < e.num_vertices(); ++v)
+  for (VertexId v{0}; v < e.num_vertices(); ++v)
     if (e.boundary[v]) CHECK(e.target[v] == r.target[v]);
 }
 
@@ -254,7 +254,7 @@ TEST_CASE(
   // z = 1 is not a double. The nearest doubles put the apex at z = 1 (flat); the double on the
   // exact value's other side, 1 + 2^-52, keeps it positive. No interior vertex can help.
   MapProblem p;
-  p.tets = {{0, 1, 2, 3}};
+  p.tets = topology::make_tets({{0, 1, 2, 3}});
   p.source = {{Rational(0), Rational(0), Rational(0)},
               {Rational(1), Rational(0), Rational(0)},
               {Rational(0), Rational(1), Rational(0)},

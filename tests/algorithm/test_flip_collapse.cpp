@@ -66,7 +66,7 @@ TEST_CASE("a flip collapse removes an added vertex without moving any and keeps 
       CHECK(c->flips <= flip_collapse_max_flips);
       CHECK(std::is_sorted(c->touched.begin(), c->touched.end()));
       // Only gone left the mesh (a 2-3 flip adds a tet, so the tet count may even grow).
-      for (VertexId v = 0; v < e.num_vertices(); ++v)
+      for (VertexId v{0}; v < e.num_vertices(); ++v)
         if (v != gone) CHECK(e.mesh.tets_of(v).empty() == before.mesh.tets_of(v).empty());
       CHECK(every_tet_positive(e));
     }

@@ -49,7 +49,7 @@ double largest_residual(const MapProblem& p, const std::vector<Point3>& target) 
   double worst = 0;
   for (std::uint32_t v = 0; v < p.source.size(); ++v) {
     if (boundary[v]) continue;
-    const std::vector<topology::VertexId> nbrs = topology::vertex_neighbors(mesh, v);
+    const std::vector<topology::VertexId> nbrs = topology::vertex_neighbors(mesh, topology::VertexId{v});
     for (int k = 0; k < 3; ++k) {
       Rational r = Rational(static_cast<long>(nbrs.size())) * target[v][k];
       for (topology::VertexId u : nbrs) r -= target[u][k];
@@ -103,8 +103,8 @@ Comb suspended_comb() {
   p.source.push_back({Rational(0), Rational(0), Rational(-6)});
   for (std::uint32_t i = 0; i < m; ++i) {
     const std::uint32_t a = 1 + i, b = 1 + (i + 1) % m;
-    p.tets.push_back({0, north, a, b});
-    p.tets.push_back({0, south, b, a});
+    p.tets.push_back(topology::make_tet({0, north, a, b}));
+    p.tets.push_back(topology::make_tet({0, south, b, a}));
   }
   for (std::uint32_t v = 1; v <= south; ++v) {
     p.boundary_vertices.push_back(v);
@@ -210,7 +210,7 @@ TEST_CASE("tutte_map refuses a vertex in no tet, a component without boundary, m
   SUBCASE("a tet whose vertices are all interior and disconnected from the boundary") {
     const auto n = static_cast<std::uint32_t>(p.source.size());
     for (int i = 0; i < 4; ++i) p.source.push_back({Rational(i), Rational(i * i), Rational(i * i * i)});
-    p.tets.push_back({n, n + 1, n + 2, n + 3});
+    p.tets.push_back(topology::make_tet({n, n + 1, n + 2, n + 3}));
     const InitialMap m = tutte_map(p);
     CHECK_FALSE(m.ok);
     CHECK(m.message == "interior vertex " + std::to_string(n) + " has no path to a boundary vertex");
@@ -236,7 +236,7 @@ TEST_CASE("tutte_map refuses a vertex in no tet, a component without boundary, m
                            std::to_string(p.boundary_vertices.front()) + " is beyond the doubles");
   }
   SUBCASE("a tet vertex out of range") {
-    p.tets.back()[2] = static_cast<std::uint32_t>(p.source.size());
+    p.tets.back()[2] = topology::VertexId(p.source.size());
     const InitialMap m = tutte_map(p);
     CHECK_FALSE(m.ok);
     CHECK(m.message == "tet " + std::to_string(p.tets.size() - 1) + " lists vertex " +
@@ -297,7 +297,7 @@ TEST_CASE("the Tutte maps of the Galaxy Maps pairs are their parameter meshes an
     const io::TetMeshData parameter = io::read_tet_mesh(parameter_path, keep);
     const io::BoundaryPositions b =
         io::read_boundary_positions_from_codomain(mesh, parameter, parameter_path);
-    const MapProblem p{mesh.tets, mesh.positions, b.vertices, b.positions, {}};
+    const MapProblem p{topology::make_tets(mesh.tets), mesh.positions, b.vertices, b.positions, {}};
     const InitialMap ours = tutte_map(p);
     check_solves_its_system(p, ours);
     const InitialMap theirs = given_map(p, parameter.positions);

@@ -40,7 +40,7 @@ TEST_CASE("the unbroken problem maps") { cmx::test::map_checked(grid_problem());
 
 TEST_CASE("a vertex index out of range is invalid input naming the tet") {
   MapProblem p = grid_problem();
-  p.tets[3][2] = 999;
+  p.tets[3][2] = topology::VertexId{999};
   std::string what;
   CHECK(error_of(p, &what) == MapErrorKind::invalid_input);
   CHECK(what.find("tet 3") != std::string::npos);
@@ -53,7 +53,7 @@ TEST_CASE("a mesh that is not a ball is refused with the ball check's reason") {
   p.source.push_back({Rational(11), Rational(10), Rational(10)});
   p.source.push_back({Rational(10), Rational(11), Rational(10)});
   const std::uint32_t n = std::uint32_t(p.source.size());
-  p.tets.push_back({p.tets[0][0], n - 3, n - 2, n - 1});
+  p.tets.push_back(topology::make_tet({p.tets[0][0], n - 3, n - 2, n - 1}));
   std::string what;
   CHECK(error_of(p, &what) == MapErrorKind::not_ball);
   CHECK_FALSE(what.empty());

@@ -34,7 +34,7 @@ MapProblem load(const fs::path& domain, const fs::path& boundary, bool codomain)
   const io::BoundaryPositions b = codomain ? io::read_boundary_positions_from_codomain(mesh, boundary.string())
                                            : io::read_boundary_positions(boundary.string(), mesh.positions.size());
   MapProblem p;
-  p.tets = mesh.tets;
+  p.tets = topology::make_tets(mesh.tets);
   p.source = mesh.positions;
   p.boundary_vertices = b.vertices;
   p.boundary_positions = b.positions;

@@ -19,7 +19,7 @@ TEST_CASE(
     test::Shrunk s = test::shrunk(test::problem_from(perturbed_grid(6, 5, 5, 11), shape));
     const PlacementOptions options;
     std::size_t placed = 0, declined = 0;
-    for (VertexId v = 0; v < s.e.num_vertices(); ++v) {
+    for (VertexId v{0}; v < s.e.num_vertices(); ++v) {
       if (!s.e.unexpanded[v]) continue;
       CAPTURE(v);
       const FloatCone guess = float_expansion_cone(s.e, v);
@@ -47,7 +47,7 @@ TEST_CASE(
 
 TEST_CASE("a float-centre placement declines other backends, precision policies and coordinate arithmetics") {
   test::Shrunk s = test::shrunk(test::problem_from(perturbed_grid(4, 4, 3, 7), "sphere"));
-  VertexId v = 0;
+  VertexId v{0};
   while (!s.e.unexpanded[v] || !place_at_float_centre(s.e, v, float_expansion_cone(s.e, v), {})) ++v;
   const FloatCone guess = float_expansion_cone(s.e, v);
   PlacementOptions o;
@@ -70,7 +70,7 @@ TEST_CASE("a cone proved closed on its float basis's rows has no interior for th
   for (const char* shape : {"sphere", "star:4", "stiff-tet", "tet"}) {
     for (std::uint64_t seed : {3, 11, 19}) {
       test::Shrunk s = test::shrunk(test::problem_from(perturbed_grid(5, 4, 4, seed), shape));
-      for (VertexId v = 0; v < s.e.num_vertices(); ++v) {
+      for (VertexId v{0}; v < s.e.num_vertices(); ++v) {
         if (!s.e.unexpanded[v]) continue;
         const FloatCone guess = float_expansion_cone(s.e, v);
         if (guess.base_tets == 0) continue;

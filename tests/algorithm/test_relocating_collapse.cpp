@@ -50,7 +50,7 @@ TEST_CASE("a relocating collapse removes an added vertex by moving others and ke
         CHECK((e.source[u] != before.source[u] || e.target[u] != before.target[u]));
       }
       // Nothing but the movers moved.
-      for (VertexId v = 0; v < e.num_vertices(); ++v)
+      for (VertexId v{0}; v < e.num_vertices(); ++v)
         if (std::find(c->movers.begin(), c->movers.end(), v) == c->movers.end()) {
           CHECK(e.source[v] == before.source[v]);
           CHECK(e.target[v] == before.target[v]);

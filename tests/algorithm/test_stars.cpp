@@ -111,7 +111,7 @@ TEST_CASE("stars around a region mapped outside the domain keep the domain bound
 TEST_CASE("flat tets are defects and get stars like inverted ones") {
   InitialMap m = identity_map(5);
   // An interior vertex moved onto the plane of the opposite face of one of its tets.
-  const topology::VertexId v = 3 * 36 + 3 * 6 + 3;  // grid vertex (3, 3, 3) of a 5x5x5 grid
+  const topology::VertexId v{3 * 36 + 3 * 6 + 3};  // grid vertex (3, 3, 3) of a 5x5x5 grid
   REQUIRE_FALSE(m.boundary[v]);
   const topology::TetId t = m.mesh().tets_of(v)[0];
   const topology::Triangle f = topology::tet_face(m.mesh().tet(t), topology::local_index(m.mesh().tet(t), v));
@@ -242,7 +242,7 @@ TEST_CASE("star growth skips dead tet slots") {
   InitialMap m = identity_map(6);
   cmx::test::fold(m, {3, 3, 3}, 1.1, 0.3);
   // Every tet of the fold's centre vertex moved to a new slot: their old slots are tombstones.
-  const topology::VertexId centre = 3 + 7 * (3 + 7 * 3);
+  const topology::VertexId centre{3 + 7 * (3 + 7 * 3)};
   const std::vector<topology::TetId> around(m.mesh().tets_of(centre).begin(), m.mesh().tets_of(centre).end());
   for (topology::TetId t : around) {
     const topology::Tet x = m.mesh().tet(t);

@@ -65,7 +65,7 @@ inline Rational coordinate(const InitialMap& m, topology::VertexId v, int axis) 
 // Moves every interior vertex that `pick` accepts by `offset(v)` (exact).
 template <class Pick, class Offset>
 void move_interior(InitialMap& m, Pick pick, Offset offset) {
-  for (topology::VertexId v = 0; v < m.target.size(); ++v) {
+  for (topology::VertexId v{0}; v < m.target.size(); ++v) {
     if (m.boundary[v] || !pick(v)) continue;
     const std::array<Rational, 3> d = offset(v);
     m.target[v] = HPoint(m.target[v].coordinate(0) + d[0], m.target[v].coordinate(1) + d[1],
@@ -112,12 +112,12 @@ inline std::size_t count_defects(const InitialMap& m) {
 
 // check_ball on the star's tets, renumbered here.
 inline bool star_is_ball(const topology::TetMesh& mesh, const algorithm::Star& s) {
-  std::vector<topology::VertexId> index(mesh.num_vertices(), topology::invalid_index);
+  std::vector<topology::VertexId> index(mesh.num_vertices(), topology::invalid_vertex);
   std::vector<topology::Tet> tets;
   std::uint32_t next = 0;
   for (topology::TetId t : s.tets) {
     topology::Tet x = mesh.tet(t);
-    for (auto& v : x) v = index[v] == topology::invalid_index ? (index[v] = next++) : index[v];
+    for (auto& v : x) v = index[v] == topology::invalid_vertex ? (index[v] = topology::VertexId{next++}) : index[v];
     tets.push_back(x);
   }
   return topology::check_ball(topology::TetMesh(next, tets)).ok;

@@ -37,7 +37,7 @@ bool contained(const std::vector<InnerHalfSpace>& a, const std::vector<InnerHalf
 TEST_CASE("the coincidence cone of one cluster vertex is its expansion cone") {
   Shrunk s = shrunk(test::problem_from(perturbed_grid(4, 4, 3, 7), "star:2"));
   std::size_t checked = 0;
-  for (VertexId v = 0; v < s.e.num_vertices(); ++v) {
+  for (VertexId v{0}; v < s.e.num_vertices(); ++v) {
     if (!s.e.unexpanded[v]) continue;
     const ExpansionCone a = coincidence_cone(s.e, {v}), b = gather_expansion_cone(s.e, v);
     CAPTURE(v);
@@ -56,7 +56,7 @@ TEST_CASE("a subcluster search leaves the state unchanged, and its plan keeps ev
   topology::ClusterLinkWorkspace ws;
   SubclusterCounters counters;
   std::size_t plans = 0;
-  for (VertexId v = 0; v < s.e.num_vertices() && plans == 0; ++v) {
+  for (VertexId v{0}; v < s.e.num_vertices() && plans == 0; ++v) {
     if (!s.e.unexpanded[v]) continue;
     for (std::size_t size = 2; size <= 4 && plans == 0; ++size) {
       const auto plan = plan_subcluster(s.e, v, size, PlacementOptions{}, ws, counters);
@@ -84,7 +84,7 @@ TEST_CASE("a subcluster search leaves the state unchanged, and its plan keeps ev
 
 TEST_CASE("the subclusters tried around a vertex: v and its cluster neighbours, smallest first, at most 14") {
   Shrunk s = shrunk(test::problem_from(perturbed_grid(5, 4, 4, 3), "tet"));
-  for (VertexId v = 0; v < s.e.num_vertices(); ++v) {
+  for (VertexId v{0}; v < s.e.num_vertices(); ++v) {
     if (!s.e.unexpanded[v]) continue;
     const auto sets = subcluster_candidates(s.e, v, 4);
     CHECK(sets.size() <= 14);

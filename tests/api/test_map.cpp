@@ -89,7 +89,7 @@ TEST_CASE("map_to_domain on arrays gives the layers' map, verified, with positiv
   for (const auto& q : a.vertices)
     p.source.push_back(
         {cmx::rational_from_double(q[0]), cmx::rational_from_double(q[1]), cmx::rational_from_double(q[2])});
-  for (const auto& t : a.tets) p.tets.push_back({t[0], t[1], t[2], t[3]});
+  for (const auto& t : a.tets) p.tets.push_back(cmx::topology::make_tet(t));
   p.boundary_vertices = shape.ids;
   for (const auto& q : shape.positions)
     p.boundary_positions.push_back(

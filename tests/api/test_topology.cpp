@@ -19,7 +19,7 @@ using cmx::test::error_of;
 
 std::vector<cmx::Tet> tets_of(const cmx::topology::TetMesh& m) {
   std::vector<cmx::Tet> out;
-  for (const auto t : m.live_tets()) out.push_back(m.tet(t));
+  for (const auto t : m.live_tets()) out.push_back(cmx::topology::indices_of(m.tet(t)));
   return out;
 }
 

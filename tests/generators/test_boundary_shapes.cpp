@@ -220,7 +220,7 @@ TEST_CASE("generated boundaries written as exact decimals read back exactly as b
     for (std::size_t a = 0; a < 3; ++a) REQUIRE(read.positions[i][a] == cmx::rational_from_double(g.positions[i][a]));
   cmx::io::TetMeshData domain;
   domain.positions = d.positions;
-  for (auto t : d.mesh.live_tets()) domain.tets.push_back(d.mesh.tet(t));
+  for (auto t : d.mesh.live_tets()) domain.tets.push_back(cmx::topology::indices_of(d.mesh.tet(t)));
   CHECK_NOTHROW(cmx::io::check_boundary_coverage(domain, read, "generated"));
 }
 
@@ -240,7 +240,7 @@ TEST_CASE("generate_boundary reports bad input instead of guessing") {
   CHECK(g.message.find("not finite") != std::string::npos);
 
   // Two tets sharing only an edge: the boundary is not a closed surface (an edge in 4 faces).
-  const std::array<cmx::topology::Tet, 2> bowtie{{{0, 1, 2, 3}, {0, 1, 4, 5}}};
+  const std::vector<cmx::topology::TetIndices> bowtie{{0, 1, 2, 3}, {0, 1, 4, 5}};
   const TetMesh pinched(6, bowtie);
   g = alg::generate_boundary(pinched, Positions(6, {0, 0, 0}), spec);
   CHECK_FALSE(g.ok);
@@ -292,7 +292,7 @@ TEST_CASE("check_star_shaped_about_origin: a surface wrapping twice around a ray
   // instead (a pentagram) keeps every tet and every boundary face positively oriented, and the
   // origin (the midpoint of NS) on the inner side of every face, but the faces around each pole
   // now turn twice around it: a branched double cover of the sphere, not a star-shaped surface.
-  std::vector<cmx::topology::Tet> tets;
+  std::vector<cmx::topology::TetIndices> tets;
   for (std::uint32_t k = 0; k < 5; ++k) tets.push_back({0, 1, 2 + (k + 1) % 5, 2 + k});
   const TetMesh mesh(7, tets);
   alg::GeneratedBoundary b;

@@ -11,9 +11,9 @@ using namespace cmx::topology;
 using cmx::topology::test::all_cells_but;
 
 namespace {
-BallVerdict verdict_of(std::size_t n, std::vector<Tet> tets) { return check_ball(TetMesh(n, tets)); }
-bool simplex_is(const BallVerdict& v, std::vector<VertexId> s) {
-  std::vector<VertexId> a = v.simplex;
+BallVerdict verdict_of(std::size_t n, std::vector<TetIndices> tets) { return check_ball(TetMesh(n, tets)); }
+bool simplex_is(const BallVerdict& v, std::vector<std::uint32_t> s) {
+  std::vector<std::uint32_t> a = indices_of<VertexTag>(v.simplex);
   std::sort(a.begin(), a.end());
   std::sort(s.begin(), s.end());
   return a == s;

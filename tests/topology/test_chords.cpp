@@ -58,8 +58,8 @@ TEST_CASE("chord edges and faces are recognised") {
   for (TetId t : f.m.live_tets())
     for (int i = 0; i < 4; ++i)
       if (is_chord_face(f.m, f.boundary, tet_face(f.m.tet(t), i))) ++chord_faces;
-  for (VertexId a = 0; a < f.m.num_vertices(); ++a)
-    for (VertexId b = a + 1; b < f.m.num_vertices(); ++b)
+  for (VertexId a{0}; a < f.m.num_vertices(); ++a)
+    for (VertexId b{a + 1}; b < f.m.num_vertices(); ++b)
       if (is_chord_edge(f.m, f.boundary, a, b)) ++chord_edges;
   CHECK(chord_faces > 0);
   CHECK(chord_edges > 0);

@@ -12,14 +12,15 @@
 #include "topo_test_util.hpp"
 
 using namespace cmx::topology;
+using namespace cmx::topology::literals;
 using cmx::topology::test::hex_bipyramid_cone;
 
 namespace {
 
 // Flags for the given vertices.
-std::vector<char> flags_of(std::size_t n, std::initializer_list<VertexId> vs) {
+std::vector<char> flags_of(std::size_t n, std::initializer_list<std::uint32_t> vs) {
   std::vector<char> f(n, 0);
-  for (VertexId v : vs) f[v] = 1;
+  for (std::uint32_t v : vs) f[v] = 1;
   return f;
 }
 
@@ -39,24 +40,24 @@ TEST_CASE("Fig. 4 (inflation case) in 3D: expanded link = two triangles sharing 
   // Expanded: b, p0, p1, p3, p4. Unexpanded: v, s, p2, p5.
   const std::vector<char> U = flags_of(9, {0, 2, 3 + 2, 3 + 5});
   ClusterLinkWorkspace ws;
-  const LinkStats out = expanded_link_stats(m, 0, U, ws);
+  const LinkStats out = expanded_link_stats(m, 0_v, U, ws);
   CHECK(out.vertices == 5);
   CHECK(out.edges == 6);
   CHECK(out.triangles == 2);
   CHECK(out.euler == 1);
   CHECK(out.components == 1);
-  const SimplexSet lko = expanded_link(m, 0, U);
-  CHECK(lko.triangles == std::vector<Triangle>{{1, 3, 4}, {1, 6, 7}});
+  const SimplexSet lko = expanded_link(m, 0_v, U);
+  CHECK(lko.triangles == std::vector<Triangle>{{1_v, 3_v, 4_v}, {1_v, 6_v, 7_v}});
   // Lk• is the path p2 - s - p5: simply connected, so v is expandable (Eq. (1)) ...
-  const LinkStats in = unexpanded_link_stats(m, 0, U, ws);
+  const LinkStats in = unexpanded_link_stats(m, 0_v, U, ws);
   CHECK(in.vertices == 3);
   CHECK(in.edges == 2);
   CHECK(in.triangles == 0);
   CHECK(in.simply_connected());
-  CHECK(is_topologically_expandable(m, 0, U, ws));
-  CHECK(manifold_expandability(m, 0, U, ws) == 2);
+  CHECK(is_topologically_expandable(m, 0_v, U, ws));
+  CHECK(manifold_expandability(m, 0_v, U, ws) == 2);
   // ... but only up to inflation: the cone base is pinched at b.
-  CHECK(expanded_link_cut_vertices(m, 0, U) == std::vector<VertexId>{1});
+  CHECK(expanded_link_cut_vertices(m, 0_v, U) == std::vector<VertexId>{1_v});
 }
 
 TEST_CASE("cut vertices of Lk°: a lone vertex or a dangling edge has no fan") {
@@ -64,23 +65,23 @@ TEST_CASE("cut vertices of Lk°: a lone vertex or a dangling edge has no fan") {
   // Everything unexpanded but b: Lk°(v) = {b}, the 3D version of the paper's 2D inflation case.
   const std::vector<char> only_b = flags_of(9, {0, 2, 3, 4, 5, 6, 7, 8});
   ClusterLinkWorkspace ws;
-  CHECK(is_topologically_expandable(m, 0, only_b, ws));
-  CHECK(expanded_link_cut_vertices(m, 0, only_b) == std::vector<VertexId>{1});
+  CHECK(is_topologically_expandable(m, 0_v, only_b, ws));
+  CHECK(expanded_link_cut_vertices(m, 0_v, only_b) == std::vector<VertexId>{1_v});
   // Lk°(v) = the edge (b, p0): both ends lack a triangle.
   const std::vector<char> edge = flags_of(9, {0, 2, 4, 5, 6, 7, 8});
-  CHECK(expanded_link_stats(m, 0, edge, ws).simply_connected());
-  CHECK(expanded_link_cut_vertices(m, 0, edge) == std::vector<VertexId>{1, 3});
+  CHECK(expanded_link_stats(m, 0_v, edge, ws).simply_connected());
+  CHECK(expanded_link_cut_vertices(m, 0_v, edge) == std::vector<VertexId>{1_v, 3_v});
   // Lk°(v) = a disc of two triangles (b,p0,p1), (b,p1,p2): no cut vertex.
   const std::vector<char> disc = flags_of(9, {0, 2, 6, 7, 8});
-  CHECK(expanded_link_cut_vertices(m, 0, disc).empty());
+  CHECK(expanded_link_cut_vertices(m, 0_v, disc).empty());
 }
 
 TEST_CASE("invariant: a tet is degenerate iff it has >= 2 unexpanded vertices") {
   const std::vector<char> U{1, 1, 0, 0, 1};
-  CHECK(is_degenerate_tet({0, 1, 2, 3}, U));
-  CHECK(!is_degenerate_tet({0, 2, 3, 5}, U));  // vertex 5 beyond the flags: expanded
-  CHECK(is_degenerate_tet({2, 3, 4, 0}, U));
-  CHECK(!is_degenerate_tet({2, 3, 4, 5}, U));
+  CHECK(is_degenerate_tet(make_tet({0, 1, 2, 3}), U));
+  CHECK(!is_degenerate_tet(make_tet({0, 2, 3, 5}), U));  // vertex 5 beyond the flags: expanded
+  CHECK(is_degenerate_tet(make_tet({2, 3, 4, 0}), U));
+  CHECK(!is_degenerate_tet(make_tet({2, 3, 4, 5}), U));
   const TetMesh m = two_tets_sharing_face();
   CHECK(count_degenerate_tets(m, U) == 2);  // (0,1,2,3) has 0, 1; (1,2,3,4) has 1, 4
   CHECK(count_degenerate_tets(m, std::vector<char>{1, 1, 0, 0, 0}) == 1);
@@ -91,13 +92,13 @@ TEST_CASE("Fig. 6 left: simply connected Lk• and Lk°, vertex expandable, no c
   // Unexpanded: v, s, p0, p1 (a triangle fan of Lk: (s,p1,p0)).
   const std::vector<char> U = flags_of(9, {0, 2, 3, 4});
   ClusterLinkWorkspace ws;
-  const ClusterVertexStatus st = classify_cluster_vertex(m, 0, U, ws);
+  const ClusterVertexStatus st = classify_cluster_vertex(m, 0_v, U, ws);
   CHECK(st.expandable);
   CHECK(st.unexpanded_link.triangles == 1);
   CHECK(st.manifold_k == 3);
   CHECK(st.expanded_neighbors == 5);
-  CHECK(expanded_link_stats(m, 0, U, ws).simply_connected());
-  CHECK(expanded_link_cut_vertices(m, 0, U).empty());
+  CHECK(expanded_link_stats(m, 0_v, U, ws).simply_connected());
+  CHECK(expanded_link_cut_vertices(m, 0_v, U).empty());
 }
 
 TEST_CASE("Fig. 6 right: Lk• a cycle splits Lk° in two, vertex not expandable") {
@@ -105,14 +106,14 @@ TEST_CASE("Fig. 6 right: Lk• a cycle splits Lk° in two, vertex not expandable
   // Unexpanded: v, b, p0, s, p3: Lk• is the 4-cycle b-p0-s-p3.
   const std::vector<char> U = flags_of(9, {0, 1, 3, 2, 6});
   ClusterLinkWorkspace ws;
-  const LinkStats in = unexpanded_link_stats(m, 0, U, ws);
+  const LinkStats in = unexpanded_link_stats(m, 0_v, U, ws);
   CHECK(in.vertices == 4);
   CHECK(in.edges == 4);
   CHECK(in.euler == 0);
   CHECK(in.components == 1);
-  CHECK(!is_topologically_expandable(m, 0, U, ws));
-  CHECK(manifold_expandability(m, 0, U, ws) == 0);
-  const LinkStats out = expanded_link_stats(m, 0, U, ws);
+  CHECK(!is_topologically_expandable(m, 0_v, U, ws));
+  CHECK(manifold_expandability(m, 0_v, U, ws) == 0);
+  const LinkStats out = expanded_link_stats(m, 0_v, U, ws);
   CHECK(out.components == 2);  // {p1,p2} and {p4,p5}
   CHECK(out.euler == 2);
 }
@@ -120,17 +121,17 @@ TEST_CASE("Fig. 6 right: Lk• a cycle splits Lk° in two, vertex not expandable
 TEST_CASE("k-manifold expandability: 1, 2, 3 and branching tree") {
   const TetMesh m = hex_bipyramid_cone();
   ClusterLinkWorkspace ws;
-  CHECK(manifold_expandability(m, 0, flags_of(9, {0, 1}), ws) == 1);          // one cluster edge
-  CHECK(manifold_expandability(m, 0, flags_of(9, {0, 3, 4, 5}), ws) == 2);    // path p0-p1-p2
-  CHECK(manifold_expandability(m, 0, flags_of(9, {0, 1, 3, 4, 5}), ws) == 3); // disc of 2 triangles
+  CHECK(manifold_expandability(m, 0_v, flags_of(9, {0, 1}), ws) == 1);          // one cluster edge
+  CHECK(manifold_expandability(m, 0_v, flags_of(9, {0, 3, 4, 5}), ws) == 2);    // path p0-p1-p2
+  CHECK(manifold_expandability(m, 0_v, flags_of(9, {0, 1, 3, 4, 5}), ws) == 3); // disc of 2 triangles
   // A tree with a branch point: b - p0, b - p2, b - p4 plus nothing else is not induced (p's are
   // not adjacent to each other: p0,p2,p4), so Lk• = star tree at b: expandable, not k-manifold.
   const std::vector<char> tree = flags_of(9, {0, 1, 3, 5, 7});
-  CHECK(is_topologically_expandable(m, 0, tree, ws));
-  CHECK(manifold_expandability(m, 0, tree, ws) == 0);
+  CHECK(is_topologically_expandable(m, 0_v, tree, ws));
+  CHECK(manifold_expandability(m, 0_v, tree, ws) == 0);
   // Whole link unexpanded (a sphere) or empty: not expandable.
-  CHECK(!is_topologically_expandable(m, 0, flags_of(9, {0, 1, 2, 3, 4, 5, 6, 7, 8}), ws));
-  CHECK(!is_topologically_expandable(m, 0, flags_of(9, {0}), ws));
+  CHECK(!is_topologically_expandable(m, 0_v, flags_of(9, {0, 1, 2, 3, 4, 5, 6, 7, 8}), ws));
+  CHECK(!is_topologically_expandable(m, 0_v, flags_of(9, {0}), ws));
 }
 
 TEST_CASE("Proposition 1: chi(M• \\ St(v)) = chi(M•) + chi(Lk•(v)) - 1") {
@@ -186,7 +187,7 @@ TEST_CASE("Proposition 2: removing v keeps a connected M• connected iff Lk•(
   const auto seq = topological_expansion(g.mesh, {ExpansionOrderKind::random, 3}).sequence;
   std::size_t both = 0, disconnecting = 0;
   for (std::size_t s = 0; s + 2 < seq.size(); s += 3) {
-    for (VertexId v = 0; v < U.size(); v += 5) {
+    for (VertexId v{0}; v < U.size(); v = VertexId{v + 5}) {
       if (!U[v]) continue;
       const LinkStats lk = unexpanded_link_stats(g.mesh, v, U, ws);
       U[v] = 0;
@@ -211,8 +212,8 @@ TEST_CASE("Proposition 3: Lk°(v) simply connected iff Lk•(v) simply connected
     std::vector<char> U(9, 0);
     U[0] = 1;
     for (int i = 0; i < 8; ++i) U[1 + i] = (mask >> i) & 1 ? 1 : 0;
-    const bool in = unexpanded_link_stats(m, 0, U, ws).simply_connected();
-    const bool out = expanded_link_stats(m, 0, U, ws).simply_connected();
+    const bool in = unexpanded_link_stats(m, 0_v, U, ws).simply_connected();
+    const bool out = expanded_link_stats(m, 0_v, U, ws).simply_connected();
     CHECK(in == out);
     yes += in ? 1 : 0;
   }
@@ -224,7 +225,7 @@ TEST_CASE("Proposition 3: Lk°(v) simply connected iff Lk•(v) simply connected
   const std::vector<char> interior = interior_vertex_flags(g.mesh);
   for (int trial = 0; trial < 50; ++trial) {
     std::vector<char> U = random_subset(g.mesh.num_vertices(), 0.5, rng);
-    for (VertexId v = 0; v < U.size(); ++v) {
+    for (VertexId v{0}; v < U.size(); ++v) {
       if (!interior[v]) continue;
       U[v] = 1;
       CHECK(unexpanded_link_stats(g.mesh, v, U, ws).simply_connected() ==

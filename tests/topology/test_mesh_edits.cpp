@@ -13,14 +13,15 @@
 #include "topology/mesh_edits.hpp"
 
 using namespace cmx::topology;
+using namespace cmx::topology::literals;
 
 TEST_CASE("edge split: interior and boundary edges") {
   GridComplex g = grid_complex(2, 2, 2);
   TetMesh& m = g.mesh;
-  const VertexId center = 1 + 3 * (1 + 3 * 1);
-  const VertexId corner = 0;
+  const VertexId center{1 + 3 * (1 + 3 * 1)};
+  const VertexId corner{0};
   // Interior edge center -> (2,2,2)? use a neighbor of the center.
-  const VertexId far = 2 + 3 * (2 + 3 * 2);
+  const VertexId far{2 + 3 * (2 + 3 * 2)};
   const std::size_t around = tets_around_edge(m, center, far).size();
   REQUIRE(around > 0);
   const std::size_t before = m.num_tets();
@@ -35,7 +36,7 @@ TEST_CASE("edge split: interior and boundary edges") {
   CHECK(check_incidences(m).ok);
   CHECK(check_ball(m).ok);
   // A boundary edge.
-  const SplitResult b = split_edge(m, corner, 1);
+  const SplitResult b = split_edge(m, corner, 1_v);
   REQUIRE(b.ok);
   CHECK(check_incidences(m).ok);
   CHECK(check_ball(m).ok);
@@ -48,7 +49,7 @@ TEST_CASE("edge split: interior and boundary edges") {
 
 TEST_CASE("face split 1->3: interior face (two tets) and boundary face (one tet)") {
   TetMesh m = two_tets_sharing_face();
-  const SplitResult r = split_face(m, 1, 2, 3);
+  const SplitResult r = split_face(m, 1_v, 2_v, 3_v);
   REQUIRE(r.ok);
   CHECK(r.modified.size() == 2);
   CHECK(r.created.size() == 4);
@@ -56,13 +57,13 @@ TEST_CASE("face split 1->3: interior face (two tets) and boundary face (one tet)
   CHECK(check_incidences(m).ok);
   CHECK(check_ball(m).ok);
   CHECK(boundary_vertex_flags(m)[r.new_vertex] == 0);  // interior now
-  const SplitResult s = split_face(m, 0, 1, 2);        // boundary face
+  const SplitResult s = split_face(m, 0_v, 1_v, 2_v);        // boundary face
   REQUIRE(s.ok);
   CHECK(s.created.size() == 2);
   CHECK(m.num_tets() == 8);
   CHECK(check_incidences(m).ok);
   CHECK(check_ball(m).ok);
-  CHECK(!split_face(m, 0, 1, 4).ok);
+  CHECK(!split_face(m, 0_v, 1_v, 4_v).ok);
 }
 
 TEST_CASE("random splits keep a consistent ball") {
@@ -91,25 +92,25 @@ TEST_CASE("random splits keep a consistent ball") {
 TEST_CASE("edge collapse: link condition refuses pinches, accepted collapses keep a ball") {
   // A single tet: collapsing any edge would flatten it; refused.
   TetMesh one = single_tet();
-  CHECK(!satisfies_link_condition(one, 0, 1));
-  CHECK(!collapse_edge(one, 0, 1).ok);
+  CHECK(!satisfies_link_condition(one, 0_v, 1_v));
+  CHECK(!collapse_edge(one, 0_v, 1_v).ok);
   CHECK(one.num_tets() == 1);
   // The diagonal of a single cube is an interior edge between two boundary vertices: the plain
   // link condition holds, the boundary rule refuses (the collapse would pinch the boundary).
   {
     const GridComplex cube = grid_complex(1, 1, 1);
-    const SimplexSet la = vertex_link(cube.mesh, 0), lb = vertex_link(cube.mesh, 7),
-                     lab = edge_link(cube.mesh, 0, 7);
+    const SimplexSet la = vertex_link(cube.mesh, 0_v), lb = vertex_link(cube.mesh, 7_v),
+                     lab = edge_link(cube.mesh, 0_v, 7_v);
     std::vector<VertexId> common;
     std::set_intersection(la.vertices.begin(), la.vertices.end(), lb.vertices.begin(), lb.vertices.end(),
                           std::back_inserter(common));
     CHECK(common == lab.vertices);
-    CHECK(!satisfies_link_condition(cube.mesh, 0, 7));
+    CHECK(!satisfies_link_condition(cube.mesh, 0_v, 7_v));
   }
   // Undo an edge split by collapsing the new vertex.
   GridComplex g = grid_complex(2, 2, 2);
   const std::size_t tets = g.mesh.num_tets();
-  const VertexId center = 13, far = 26;
+  const VertexId center{13}, far{26};
   const SplitResult s = split_edge(g.mesh, center, far);
   REQUIRE(s.ok);
   CHECK(satisfies_link_condition(g.mesh, center, s.new_vertex));
@@ -123,7 +124,7 @@ TEST_CASE("edge collapse: link condition refuses pinches, accepted collapses kee
   // dropping the vertex left without tets), and some collapses are refused.
   const GridComplex h = grid_complex(2, 2, 1);
   std::size_t accepted = 0, refused = 0;
-  for (VertexId a = 0; a < h.mesh.num_vertices(); ++a)
+  for (VertexId a{0}; a < h.mesh.num_vertices(); ++a)
     for (VertexId b : vertex_neighbors(h.mesh, a)) {
       TetMesh m = h.mesh;
       const CollapseResult r = collapse_edge(m, a, b);
@@ -138,7 +139,7 @@ TEST_CASE("edge collapse: link condition refuses pinches, accepted collapses kee
       std::vector<Tet> ts;
       for (TetId t : m.live_tets()) {
         Tet x = m.tet(t);
-        for (VertexId& v : x) v = v > b ? v - 1 : v;
+        for (VertexId& v : x) v = v > b ? VertexId{v - 1} : v;
         ts.push_back(x);
       }
       const BallVerdict bv = check_ball(TetMesh(m.num_vertices() - 1, ts));
@@ -174,7 +175,7 @@ Tet even_permutation(const Tet& t, int k) {
 TEST_CASE("2-3 and 3-2 flips keep every tet positive whatever the stored vertex order") {
   // p, q, r: a triangle; d below it, e above it, both over its inside (a convex pair).
   const std::vector<P> at{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -3}, {1, 1, 3}};
-  const VertexId p = 0, q = 1, r = 2, d = 3, e = 4;
+  const VertexId p{0}, q{1}, r{2}, d{3}, e{4};
   for (int k = 0; k < 12; ++k) {
     CAPTURE(k);
     // (d, p, q, r) and (e, q, p, r) are positive; store them in the k-th even order.
@@ -209,7 +210,7 @@ TEST_CASE("flips are refused where they would duplicate an edge or a face") {
   const TetMesh before = m;
   // An edge in more than three tets, and an interior face whose apexes are already joined is
   // looked for among the grid's faces: every refusal leaves the mesh as it was.
-  const VertexId center = 1 + 3 * (1 + 3 * 1);
+  const VertexId center{1 + 3 * (1 + 3 * 1)};
   for (VertexId v : vertex_neighbors(m, center)) {
     if (tets_around_edge(m, center, v).size() == 3) continue;
     CHECK_FALSE(flip_32(m, center, v).ok);

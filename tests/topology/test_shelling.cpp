@@ -56,7 +56,7 @@ TEST_CASE("removability rule: neither a tet with four shared faces nor a tet pin
   // Peel two tets of the fan around the diagonal (0,0,0)-(1,1,1) of the corner cell: the
   // diagonal is then on the boundary, and a fan tet with both faces at the diagonal shared has
   // t ∩ (rest) a disc but t ∩ boundary not a disc: removing it would pinch the diagonal.
-  const VertexId o = 0, d = 1 + 4 * (1 + 4 * 1);
+  const VertexId o{0}, d{1 + 4 * (1 + 4 * 1)};
   std::vector<TetId> fan = tets_around_edge(g.mesh, o, d);
   REQUIRE(fan.size() == 6);
   std::vector<char> rem = all;

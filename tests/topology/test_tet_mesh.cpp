@@ -12,42 +12,43 @@
 #include "topo_test_util.hpp"
 
 using namespace cmx::topology;
+using namespace cmx::topology::literals;
 
 TEST_CASE("single tet: incidences, boundary, stars and links") {
   const TetMesh m = single_tet();
   CHECK(m.num_vertices() == 4);
   CHECK(m.num_tets() == 1);
   CHECK(check_incidences(m).ok);
-  for (VertexId v = 0; v < 4; ++v) CHECK(m.tets_of(v).size() == 1);
+  for (VertexId v{0}; v < 4; ++v) CHECK(m.tets_of(v).size() == 1);
   const auto bf = boundary_faces(m);
   REQUIRE(bf.size() == 4);
   // Outward orientation: the face opposite vertex 0 is (1,2,3) in that cyclic order.
   bool found = false;
   for (const auto& f : bf)
-    if (f.opposite == 0) found = same_orientation(f.face, Triangle{1, 2, 3});
+    if (f.opposite == 0) found = same_orientation(f.face, Triangle{1_v, 2_v, 3_v});
   CHECK(found);
-  const SimplexSet lk = vertex_link(m, 0);
-  CHECK(lk.vertices == std::vector<VertexId>{1, 2, 3});
+  const SimplexSet lk = vertex_link(m, 0_v);
+  CHECK(lk.vertices == std::vector<VertexId>{1_v, 2_v, 3_v});
   CHECK(lk.edges.size() == 3);
   CHECK(lk.triangles.size() == 1);
   CHECK(euler_characteristic(lk) == 1);
-  const SimplexSet st = vertex_star(m, 0);
-  CHECK(st.vertices == std::vector<VertexId>{0});
+  const SimplexSet st = vertex_star(m, 0_v);
+  CHECK(st.vertices == std::vector<VertexId>{0_v});
   CHECK(st.edges.size() == 3);
   CHECK(st.triangles.size() == 3);
   CHECK(st.tets.size() == 1);
-  const SimplexSet cl = vertex_closure(m, 0);
+  const SimplexSet cl = vertex_closure(m, 0_v);
   CHECK(euler_characteristic(cl) == 1);  // closed tet: 4 - 6 + 4 - 1
-  const SimplexSet el = edge_link(m, 0, 1);
-  CHECK(el.vertices == std::vector<VertexId>{2, 3});
-  CHECK(el.edges == std::vector<Edge>{{2, 3}});
+  const SimplexSet el = edge_link(m, 0_v, 1_v);
+  CHECK(el.vertices == std::vector<VertexId>{2_v, 3_v});
+  CHECK(el.edges == std::vector<Edge>{{2_v, 3_v}});
   // Restricted to the subset {0,1,2}: the link of 0 is the edge (1,2).
   const std::vector<char> sub{1, 1, 1, 0};
-  const SimplexSet lr = vertex_link(m, 0, VertexSubset(sub));
-  CHECK(lr.vertices == std::vector<VertexId>{1, 2});
-  CHECK(lr.edges == std::vector<Edge>{{1, 2}});
+  const SimplexSet lr = vertex_link(m, 0_v, VertexSubset(sub));
+  CHECK(lr.vertices == std::vector<VertexId>{1_v, 2_v});
+  CHECK(lr.edges == std::vector<Edge>{{1_v, 2_v}});
   CHECK(lr.triangles.empty());
-  const SimplexSet sr = vertex_star(m, 3, VertexSubset(sub));
+  const SimplexSet sr = vertex_star(m, 3_v, VertexSubset(sub));
   CHECK(sr.vertices.empty());  // 3 is not in the subset
 }
 
@@ -59,17 +60,17 @@ TEST_CASE("two tets sharing a face: adjacency and closure") {
   CHECK(adj.neighbor[0][0] == 1);  // across the face opposite vertex 0: (1,2,3)
   CHECK(adj.neighbor[1][3] == 0);
   CHECK(boundary_faces(m).size() == 6);
-  CHECK(tets_around_face(m, 1, 2, 3).size() == 2);
-  CHECK(tets_around_edge(m, 0, 4).empty());
-  const SimplexSet ec = edge_closure(m, 1, 2);
+  CHECK(tets_around_face(m, 1_v, 2_v, 3_v).size() == 2);
+  CHECK(tets_around_edge(m, 0_v, 4_v).empty());
+  const SimplexSet ec = edge_closure(m, 1_v, 2_v);
   CHECK(ec.tets.size() == 2);
   CHECK(euler_characteristic(ec) == 1);
   CHECK(connected_components(ec) == 1);
-  const SimplexSet es = edge_star(m, 1, 2);
-  CHECK(es.edges == std::vector<Edge>{{1, 2}});
+  const SimplexSet es = edge_star(m, 1_v, 2_v);
+  CHECK(es.edges == std::vector<Edge>{{1_v, 2_v}});
   CHECK(es.triangles.size() == 3);  // (0,1,2), (1,2,3), (1,2,4)
   CHECK(es.tets.size() == 2);
-  CHECK(vertex_neighbors(m, 1) == std::vector<VertexId>{0, 2, 3, 4});
+  CHECK(vertex_neighbors(m, 1_v) == std::vector<VertexId>{0_v, 2_v, 3_v, 4_v});
 }
 
 TEST_CASE("grid generators: numbering, counts, positive orientation, ball") {
@@ -77,7 +78,7 @@ TEST_CASE("grid generators: numbering, counts, positive orientation, ball") {
     const GridComplex g = grid_complex(3, 2, 4, tri);
     CHECK(g.mesh.num_vertices() == 4 * 3 * 5);
     CHECK(g.mesh.num_tets() == 6 * 3 * 2 * 4);
-    for (VertexId v = 0; v < g.mesh.num_vertices(); ++v) {
+    for (VertexId v{0}; v < g.mesh.num_vertices(); ++v) {
       const auto& c = g.coords[v];
       CHECK(v == static_cast<VertexId>(c[0] + 4 * (c[1] + 3 * c[2])));
     }
@@ -141,24 +142,40 @@ TEST_CASE("remove_tet tombstones and compact renumbers consistently") {
 TEST_CASE("TetMesh refuses out-of-range edits and stays consistent") {
   // An out-of-range tet is refused at insertion; a refused set_tet leaves the mesh unchanged.
   TetMesh m(4);
-  CHECK(m.add_tet({0, 1, 2, 7}) == invalid_index);
+  CHECK(m.add_tet(make_tet({0, 1, 2, 7})) == invalid_index);
   CHECK(m.skipped_tets() == 1);
-  CHECK(m.add_tet({0, 1, 2, 3}) == 0);
+  CHECK(m.add_tet(make_tet({0, 1, 2, 3})) == 0);
   CHECK(check_incidences(m).ok);
-  CHECK(m.set_tet(TetId{0}, {0, 1, 3, 2}));
+  CHECK(m.set_tet(TetId{0}, make_tet({0, 1, 3, 2})));
   CHECK(check_incidences(m).ok);
-  CHECK(!m.set_tet(TetId{0}, {0, 1, 3, 9}));
+  CHECK(!m.set_tet(TetId{0}, make_tet({0, 1, 3, 9})));
 }
 
-TEST_CASE("A tet handle is made from an index only explicitly and never from another kind") {
-  struct OtherTag {};
+TEST_CASE("Vertex and tet handles are made from an index only explicitly and never from each other") {
   static_assert(!std::is_convertible_v<std::uint32_t, TetId>);
+  static_assert(!std::is_convertible_v<std::uint32_t, VertexId>);
   static_assert(std::is_constructible_v<TetId, std::uint32_t>);
-  static_assert(!std::is_constructible_v<TetId, Handle<OtherTag>>);
+  static_assert(std::is_constructible_v<VertexId, std::uint32_t>);
+  static_assert(!std::is_constructible_v<TetId, VertexId>);
+  static_assert(!std::is_constructible_v<VertexId, TetId>);
   static_assert(std::is_convertible_v<TetId, std::uint32_t>);
+  static_assert(std::is_convertible_v<VertexId, std::uint32_t>);
+  // The mesh's queries take the kind they index: a tet where a vertex is expected does not compile.
+  static_assert(std::is_invocable_v<decltype(&TetMesh::tets_of), const TetMesh&, VertexId>);
+  static_assert(!std::is_invocable_v<decltype(&TetMesh::tets_of), const TetMesh&, TetId>);
+  static_assert(std::is_invocable_v<decltype(&TetMesh::tet), const TetMesh&, TetId>);
+  static_assert(!std::is_invocable_v<decltype(&TetMesh::tet), const TetMesh&, VertexId>);
   GridComplex g = grid_complex(1, 1, 1);
   const TetId t{3};
   CHECK(t.idx() == 3);
-  CHECK(g.mesh.tet(t) == g.mesh.tet(TetId{3}));
+  CHECK(g.mesh.tet(t) == g.mesh.tet(3_tet));
   CHECK(invalid_tet == invalid_index);
+  CHECK(invalid_vertex == invalid_index);
+  const Tet& x = g.mesh.tet(t);
+  for (const VertexId v : x) {
+    const auto around = g.mesh.tets_of(v);
+    CHECK(std::find(around.begin(), around.end(), t) != around.end());
+  }
+  CHECK(make_tet({4, 5, 6, 7}) == Tet{4_v, 5_v, 6_v, 7_v});
+  CHECK(indices_of(make_tet({4, 5, 6, 7})) == TetIndices{4, 5, 6, 7});
 }

@@ -77,7 +77,7 @@ TEST_CASE("orders: index expands the lowest expandable id, priority prefers low 
       const ClusterVertexStatus chosen = classify_cluster_vertex(g.mesh, p.sequence[s], U, ws);
       REQUIRE(chosen.expandable);
       CHECK(chosen.manifold_k == p.sequence_k[s]);
-      for (VertexId w = 0; w < U.size(); ++w) {
+      for (VertexId w{0}; w < U.size(); ++w) {
         if (!U[w]) continue;
         const ClusterVertexStatus o = classify_cluster_vertex(g.mesh, w, U, ws);
         if (!o.expandable) continue;
@@ -122,7 +122,7 @@ TEST_CASE("Bing's house NOBUENOSS: a ball whose interior is a contractible 2-com
   // Interior vertices are exactly the points of the house (even coordinates on the sheets).
   ClusterLinkWorkspace ws;
   std::size_t nonmanifold = 0;
-  for (VertexId v = 0; v < U.size(); ++v) {
+  for (VertexId v{0}; v < U.size(); ++v) {
     if (!U[v]) continue;
     const LinkStats lk = unexpanded_link_stats(g.mesh, v, U, ws);
     CHECK(!lk.simply_connected());  // no vertex satisfies Eq. (1)

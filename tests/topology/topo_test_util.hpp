@@ -22,7 +22,7 @@ inline std::int64_t orientation(const std::array<std::int32_t, 3>& a, const std:
 // The live tets whose vertices are all flagged, as a new mesh on the same vertex ids, with the
 // unused vertices dropped (renumbered in increasing order).
 inline TetMesh flagged_submesh(const TetMesh& m, const std::vector<char>& flags) {
-  std::vector<VertexId> id(m.num_vertices(), invalid_index);
+  std::vector<std::uint32_t> id(m.num_vertices(), invalid_index);
   std::vector<Tet> tets;
   for (TetId t : m.live_tets()) {
     const Tet& x = m.tet(t);
@@ -32,11 +32,11 @@ inline TetMesh flagged_submesh(const TetMesh& m, const std::vector<char>& flags)
   }
   for (const Tet& x : tets)
     for (VertexId v : x) id[v] = 0;
-  VertexId next = 0;
+  std::uint32_t next = 0;
   for (auto& slot : id)
     if (slot != invalid_index) slot = next++;
   for (Tet& x : tets)
-    for (VertexId& v : x) v = id[v];
+    for (VertexId& v : x) v = VertexId{id[v]};
   return TetMesh(next, tets);
 }
 
@@ -52,9 +52,9 @@ inline std::vector<char> all_cells_but(std::uint32_t nx, std::uint32_t ny, std::
 // 2 = south s (0,0,-1), 3..8 = p0..p5 on the unit circle. 12 tets, a ball with one interior
 // vertex (0) whose link is the bipyramid surface.
 inline TetMesh hex_bipyramid_cone() {
-  std::vector<Tet> tets;
-  for (VertexId i = 0; i < 6; ++i) {
-    const VertexId p = 3 + i, q = 3 + (i + 1) % 6;
+  std::vector<TetIndices> tets;
+  for (std::uint32_t i = 0; i < 6; ++i) {
+    const std::uint32_t p = 3 + i, q = 3 + (i + 1) % 6;
     tets.push_back({0, 1, p, q});
     tets.push_back({0, 2, q, p});
   }
