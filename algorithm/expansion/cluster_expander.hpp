@@ -8,11 +8,11 @@
 #include <chrono>
 #include <cstdint>
 #include <optional>
-#include <queue>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "algorithm/expansion/candidate_queue.hpp"
 #include "algorithm/expansion/cluster_expansion.hpp"
 #include "algorithm/expansion/cone_base.hpp"
 #include "algorithm/expansion/expansion_cone.hpp"
@@ -20,17 +20,6 @@
 #include "topology/cluster_links.hpp"
 
 namespace cmx::algorithm::detail {
-
-enum class Kind : std::uint8_t { automatic = 0, simple = 1, star_shapify = 2, inflate = 3 };
-
-struct Entry {
-  std::array<std::int64_t, 4> key;
-  std::uint32_t version;
-  VertexId v;
-  Kind kind;
-  std::uint8_t k;  // k-manifold expandability (0: other)
-  bool operator>(const Entry& o) const { return key > o.key; }
-};
 
 // Depth of local refinement: a star-shapification or inflation expands the vertices it pushes
 // right away, refining them in turn up to this depth; deeper, they go back to the queue.
@@ -55,10 +44,9 @@ class ClusterExpander {
       : e_(e),
         s_(s),
         stats_(stats),
-        version_(e.properties.make<std::uint32_t>(e.num_vertices(), 0)),
+        queue_(e, s.order),
         cached_(e.properties.make<std::optional<Placement>>(e.num_vertices())),
         float_centre_(e.properties.make<std::optional<std::array<double, 3>>>(e.num_vertices())),
-        is_dirty_(e.properties.make<char>(e.num_vertices(), 0)),
         guess_wrong_(e.properties.make<char>(e.num_vertices(), 0)) {}
 
   ExpansionOutcome run();
@@ -66,17 +54,13 @@ class ClusterExpander {
  private:
   // --- bookkeeping -------------------------------------------------------------------------
 
-  void dirty(VertexId v);
-  void dirty_star(VertexId v);
-  void flush_dirty();
-  std::optional<Entry> pop();
+  void classify_marked();  // evaluate() every vertex the queue has marked
   std::optional<ExpansionOutcome> check_limits() const;
   ExpansionOutcome stuck() const;
   void report_progress(bool final);
 
   // --- classification ----------------------------------------------------------------------
 
-  std::array<std::int64_t, 4> key(Kind kind, int k, std::uint32_t expanded_neighbors, VertexId v) const;
   void evaluate(VertexId v);
   Kind refinement_kind(VertexId v);
   Placement place(const ExpansionCone& cone, const VertexId* witness);
@@ -100,7 +84,6 @@ class ClusterExpander {
 
   // --- smoothing (paper Sec. 4.2.4) -------------------------------------------------------------
   void smooth_recent();
-  bool touches_cluster(VertexId b) const;
   void smooth_vertex(VertexId b);
 
   // --- local refinement ----------------------------------------------------------------------
@@ -157,14 +140,11 @@ class ClusterExpander {
   const ExpansionSettings& s_;
   MapStatistics& stats_;
   topology::ClusterLinkWorkspace ws_;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
+  CandidateQueue queue_;  // line 5's candidates and the vertices to classify again
   // Per-vertex state, grown with the mesh (Embedding::properties).
-  VertexProperty<std::uint32_t> version_;                              // of v's queue entries
   VertexProperty<std::optional<Placement>> cached_;                    // v's placement from classification
   VertexProperty<std::optional<std::array<double, 3>>> float_centre_;  // of a cone guessed open
-  VertexProperty<char> is_dirty_;                                      // 1: v waits in dirty_
   VertexProperty<char> guess_wrong_;  // 1: the float guess of v's cone was wrong once; decide exactly
-  std::vector<VertexId> dirty_;
   std::unordered_map<VertexId, int> inflations_, relaxed_moves_;
   std::size_t cluster_ = 0, expanded_ = 0, failures_ = 0, max_bits_ = 0;
   bool aggressive_ = false;

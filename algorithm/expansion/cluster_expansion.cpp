@@ -16,47 +16,8 @@ namespace cmx::algorithm {
 
 namespace detail {
 
-namespace {
-
-std::uint64_t splitmix(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-
-}  // namespace
-
-void ClusterExpander::dirty(VertexId v) {
-  if (!is_dirty_[v]) {
-    is_dirty_[v] = 1;
-    dirty_.push_back(v);
-  }
-}
-
-// Every cluster vertex of every tet around v (v included).
-void ClusterExpander::dirty_star(VertexId v) {
-  for (TetId t : e_.mesh.tets_of(v))
-    for (VertexId w : e_.mesh.tet(t))
-      if (e_.unexpanded[w]) dirty(w);
-}
-
-void ClusterExpander::flush_dirty() {
-  while (!dirty_.empty()) {
-    const VertexId v = dirty_.back();
-    dirty_.pop_back();
-    is_dirty_[v] = 0;
-    evaluate(v);
-  }
-}
-
-std::optional<Entry> ClusterExpander::pop() {
-  while (!queue_.empty()) {
-    const Entry top = queue_.top();
-    queue_.pop();
-    if (top.version == version_[top.v] && e_.unexpanded[top.v]) return top;
-  }
-  return std::nullopt;
+void ClusterExpander::classify_marked() {
+  while (const std::optional<VertexId> v = queue_.take_marked()) evaluate(*v);
 }
 
 std::optional<ExpansionOutcome> ClusterExpander::check_limits() const {
@@ -95,26 +56,8 @@ void ClusterExpander::report_progress(bool final) {
   s_.progress(p);
 }
 
-// The class always comes first: refinement only when no simple expansion is left, whatever the
-// order among equals (paper Sec. 4.1.2 for `priority`).
-std::array<std::int64_t, 4> ClusterExpander::key(Kind kind, int k, std::uint32_t expanded_neighbors,
-                                                 VertexId v) const {
-  switch (s_.order.kind) {
-    case topology::ExpansionOrderKind::index:
-      return {std::int64_t(kind), 0, 0, v};
-    case topology::ExpansionOrderKind::random:
-      return {std::int64_t(kind), 0, 0, std::int64_t(splitmix(s_.order.seed ^ splitmix(v)) >> 1)};
-    case topology::ExpansionOrderKind::priority:
-      break;
-  }
-  const std::int64_t kk = k == 0 ? 4 : k;
-  const std::int64_t n =
-      kind == Kind::simple ? -std::int64_t(expanded_neighbors) : std::int64_t(expanded_neighbors);
-  return {std::int64_t(kind), kk, n, v};
-}
-
 void ClusterExpander::evaluate(VertexId v) {
-  ++version_[v];
+  queue_.invalidate(v);
   cached_[v].reset();
   float_centre_[v].reset();
   if (!e_.unexpanded[v]) return;
@@ -154,8 +97,7 @@ void ClusterExpander::evaluate(VertexId v) {
       }
     }
   }
-  queue_.push({key(kind, st.manifold_k, st.expanded_neighbors, v), version_[v], v, kind,
-               std::uint8_t(st.manifold_k)});
+  queue_.push(v, kind, st.manifold_k, st.expanded_neighbors);
 }
 
 Kind ClusterExpander::refinement_kind(VertexId v) {
@@ -185,10 +127,10 @@ void ClusterExpander::after_expansion(VertexId v, int k, const Placement* placem
   ++expanded_;
   ++stats_.k_manifold[k >= 1 && k <= 3 ? k : 0];
   max_bits_ = std::max(max_bits_, position.bit_size());
-  ++version_[v];
+  queue_.invalidate(v);
   require_valid(v, "expansion", placement);
   if (s_.check) check_all("after expanding vertex " + std::to_string(v));
-  dirty_star(v);
+  queue_.mark_star(v);
   if (s_.trace) trace_row(v, position, placement);
   if (s_.smooth_every) recent_.push_back(v);
 }
@@ -242,10 +184,10 @@ void ClusterExpander::check_all(const std::string& when) const {
 VertexId ClusterExpander::push(VertexId c, VertexId b) {
   for (TetId t : topology::tets_around_edge(e_.mesh, c, b))
     for (VertexId w : e_.mesh.tet(t))
-      if (e_.unexpanded[w]) dirty(w);
+      if (e_.unexpanded[w]) queue_.mark(w);
   const VertexId m = e_.split_edge(c, b, e_.center, true);
   ++cluster_;
-  dirty(m);
+  queue_.mark(m);
   if (s_.check) check_all("after pushing edge (" + std::to_string(c) + ", " + std::to_string(b) + ")");
   return m;
 }
@@ -257,8 +199,8 @@ void ClusterExpander::undo_push(VertexId c, VertexId x) {
   if (!r.ok) throw MapError(MapErrorKind::internal, "could not undo a push: " + r.message);
   e_.unexpanded[x] = 0;
   --cluster_;
-  ++version_[x];
-  dirty_star(c);
+  queue_.invalidate(x);
+  queue_.mark_star(c);
 }
 
 // Tried before refining v, that is only when no single vertex is simply expandable (the class
@@ -299,8 +241,8 @@ void ClusterExpander::collapse_added_since(std::size_t first) {
     const std::optional<VertexId> keep = try_collapse(e_, VertexId(g));
     if (!keep) continue;
     ++stats_.refinement_collapses;
-    ++version_[VertexId(g)];
-    dirty_star(*keep);
+    queue_.invalidate(VertexId(g));
+    queue_.mark_star(*keep);
     if (s_.check) check_all("after collapsing vertex " + std::to_string(g));
   }
 }
@@ -309,23 +251,10 @@ void ClusterExpander::collapse_added_since(std::size_t first) {
 // since the last time, if they still touch the cluster, move to their laplacian_position
 // (smoothing.hpp), which keeps every tet's state.
 void ClusterExpander::smooth_recent() {
-  std::vector<VertexId> movers;
-  for (VertexId v : recent_)
-    for (TetId t : e_.mesh.tets_of(v))
-      for (VertexId b : e_.mesh.tet(t))
-        if (!e_.unexpanded[b] && !e_.boundary[b] && touches_cluster(b)) movers.push_back(b);
+  const std::vector<VertexId> movers = smoothing_candidates(e_, recent_);
   recent_.clear();
-  std::sort(movers.begin(), movers.end());
-  movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
   for (VertexId b : movers) smooth_vertex(b);
   if (s_.check) check_all("after smoothing");
-}
-
-bool ClusterExpander::touches_cluster(VertexId b) const {
-  for (TetId t : e_.mesh.tets_of(b))
-    for (VertexId w : e_.mesh.tet(t))
-      if (e_.unexpanded[w]) return true;
-  return false;
 }
 
 void ClusterExpander::smooth_vertex(VertexId b) {
@@ -334,7 +263,7 @@ void ClusterExpander::smooth_vertex(VertexId b) {
   e_.target[b] = *q;
   ++stats_.smoothing_moves;
   max_bits_ = std::max(max_bits_, q->bit_size());
-  dirty_star(b);
+  queue_.mark_star(b);
 }
 
 }  // namespace detail

@@ -6,7 +6,8 @@
 //   while M* is not empty                                        run()
 //     line 5          select an expandable candidate (Eq. 1) by the priority of Sec. 4.1.2:
 //                     simple before star-shapification before inflation, then lower k, then
-//                     expanded neighbours                        pop(), evaluate(), key()
+//                     expanded neighbours                        queue_.pop(), evaluate()
+//                                                                (candidate_queue.hpp)
 //                     none left: one more round with heavier refinement, then stuck (a NOBUENOSS
 //                     or a refinement that failed)               stuck()
 //                     (map.cpp then searches a shelling: refinement/shelling_fallback.hpp)
@@ -24,8 +25,9 @@
 //     Sec. 4.2.2      collapse what the refinement added         collapse_added_since()
 //     Sec. 4.2.4      smooth the recently expanded vertices      smooth_recent()
 //
-// The refinement steps are in refinement/local_refinement.cpp, the bookkeeping (queue, dirty
-// set, limits, trace) in cluster_expansion.cpp; docs/algorithm/expansion.md explains each step.
+// The refinement steps are in refinement/local_refinement.cpp, the queue and the set of vertices
+// to classify again in candidate_queue.cpp, classification and bookkeeping (limits, trace) in
+// cluster_expansion.cpp; docs/algorithm/expansion.md explains each step.
 #include "algorithm/expansion/cluster_expander.hpp"
 #include "algorithm/map_error.hpp"
 
@@ -35,13 +37,13 @@ ExpansionOutcome ClusterExpander::run() {
   for (VertexId v{0}; v < e_.num_vertices(); ++v)
     if (e_.unexpanded[v]) {
       ++cluster_;
-      dirty(v);
+      queue_.mark(v);
     }
-  flush_dirty();
+  classify_marked();
   while (cluster_ > 0) {
     if (auto stop = check_limits()) return *stop;
     report_progress(false);
-    const std::optional<Entry> next = pop();  // line 5
+    const std::optional<Entry> next = queue_.pop();  // line 5
     if (!next) {
       // Every candidate failed: one more round in which refinement may also push dangling
       // leaves and inflate around cut vertices (heavier, and prone to chains of refinement, so
@@ -49,8 +51,8 @@ ExpansionOutcome ClusterExpander::run() {
       if (aggressive_ || failures_ == 0) return stuck();
       aggressive_ = true;
       for (VertexId v{0}; v < e_.num_vertices(); ++v)
-        if (e_.unexpanded[v]) dirty(v);
-      flush_dirty();
+        if (e_.unexpanded[v]) queue_.mark(v);
+      classify_marked();
       continue;
     }
     const std::size_t before = cluster_;
@@ -68,7 +70,7 @@ ExpansionOutcome ClusterExpander::run() {
       smooth_recent();
       next_smooth_ = expanded_ + s_.smooth_every;
     }
-    flush_dirty();
+    classify_marked();
   }
   report_progress(true);
   return {MapOutcome::success, {}};
@@ -98,7 +100,7 @@ void ClusterExpander::handle(const Entry& entry) {
           throw MapError(MapErrorKind::internal, "a simple cone lost its interior",
                          "vertex " + std::to_string(v));
         guess_wrong_[v] = 1;
-        dirty(v);
+        queue_.mark(v);
         return;
       }
       label_ = "simple";

@@ -1,5 +1,6 @@
 #include "algorithm/expansion/smoothing.hpp"
 
+#include <algorithm>
 #include <array>
 #include <unordered_set>
 
@@ -7,6 +8,28 @@
 #include "arith/rounding.hpp"
 
 namespace cmx::algorithm {
+
+namespace {
+
+bool touches_cluster(const Embedding& e, VertexId b) {
+  for (TetId t : e.mesh.tets_of(b))
+    for (VertexId w : e.mesh.tet(t))
+      if (e.unexpanded[w]) return true;
+  return false;
+}
+
+}  // namespace
+
+std::vector<VertexId> smoothing_candidates(const Embedding& e, const std::vector<VertexId>& recent) {
+  std::vector<VertexId> movers;
+  for (VertexId v : recent)
+    for (TetId t : e.mesh.tets_of(v))
+      for (VertexId b : e.mesh.tet(t))
+        if (!e.unexpanded[b] && !e.boundary[b] && touches_cluster(e, b)) movers.push_back(b);
+  std::sort(movers.begin(), movers.end());
+  movers.erase(std::unique(movers.begin(), movers.end()), movers.end());
+  return movers;
+}
 
 std::optional<HPoint> laplacian_position(const Embedding& e, VertexId v) {
   std::array<Rational, 3> sum{Rational(0), Rational(0), Rational(0)};

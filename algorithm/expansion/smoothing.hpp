@@ -5,11 +5,16 @@
 // at most four tries. A position is returned only when it is strictly inside the vertex's own
 // cone (exact): every tet around it keeps its state, so every invariant holds.
 #include <optional>
+#include <vector>
 
 #include "algorithm/embedding.hpp"
 
 namespace cmx::algorithm {
 
 std::optional<HPoint> laplacian_position(const Embedding& e, VertexId v);
+
+// The vertices to smooth after `recent` were expanded: their expanded, non-boundary neighbours
+// that still touch the cluster, in increasing order, each once.
+std::vector<VertexId> smoothing_candidates(const Embedding& e, const std::vector<VertexId>& recent);
 
 }  // namespace cmx::algorithm

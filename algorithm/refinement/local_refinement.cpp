@@ -53,7 +53,7 @@ bool ClusterExpander::recentre(VertexId b) {
   if (!move_to_placement(e_, b, p)) return false;
   ++stats_.relaxations;
   max_bits_ = std::max(max_bits_, p.position.bit_size());
-  dirty_star(b);
+  queue_.mark_star(b);
   require_valid(b, "re-centring", &p);
   return true;
 }
@@ -211,7 +211,7 @@ bool ClusterExpander::inflate(VertexId v, int depth) {
       undo_push(u, x);
     }
   }
-  dirty(v);
+  queue_.mark(v);
   if (progress) ++stats_.expansions_inflated;
   return progress;
 }
@@ -274,7 +274,7 @@ bool ClusterExpander::paper_inflate(VertexId v, int depth) {
       }
     }
   }
-  dirty(v);
+  queue_.mark(v);
   if (added.empty()) ++stats_.expansions_inflated;
   return added.empty();
 }

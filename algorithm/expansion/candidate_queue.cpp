@@ -1,0 +1,76 @@
+#include "algorithm/expansion/candidate_queue.hpp"
+
+namespace cmx::algorithm::detail {
+
+namespace {
+
+std::uint64_t splitmix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+}  // namespace
+
+CandidateQueue::CandidateQueue(Embedding& e, topology::ExpansionOrder order)
+    : e_(e),
+      order_(order),
+      version_(e.properties.make<std::uint32_t>(e.num_vertices(), 0)),
+      is_marked_(e.properties.make<char>(e.num_vertices(), 0)) {}
+
+void CandidateQueue::mark(VertexId v) {
+  if (!is_marked_[v]) {
+    is_marked_[v] = 1;
+    marked_.push_back(v);
+  }
+}
+
+void CandidateQueue::mark_star(VertexId v) {
+  for (TetId t : e_.mesh.tets_of(v))
+    for (VertexId w : e_.mesh.tet(t))
+      if (e_.unexpanded[w]) mark(w);
+}
+
+std::optional<VertexId> CandidateQueue::take_marked() {
+  if (marked_.empty()) return std::nullopt;
+  const VertexId v = marked_.back();
+  marked_.pop_back();
+  is_marked_[v] = 0;
+  return v;
+}
+
+void CandidateQueue::invalidate(VertexId v) { ++version_[v]; }
+
+void CandidateQueue::push(VertexId v, Kind kind, int k, std::uint32_t expanded_neighbors) {
+  queue_.push({key(kind, k, expanded_neighbors, v), version_[v], v, kind, std::uint8_t(k)});
+}
+
+std::optional<Entry> CandidateQueue::pop() {
+  while (!queue_.empty()) {
+    const Entry top = queue_.top();
+    queue_.pop();
+    if (top.version == version_[top.v] && e_.unexpanded[top.v]) return top;
+  }
+  return std::nullopt;
+}
+
+// The class always comes first: refinement only when no simple expansion is left, whatever the
+// order among equals (paper Sec. 4.1.2 for `priority`).
+std::array<std::int64_t, 4> CandidateQueue::key(Kind kind, int k, std::uint32_t expanded_neighbors,
+                                                VertexId v) const {
+  switch (order_.kind) {
+    case topology::ExpansionOrderKind::index:
+      return {std::int64_t(kind), 0, 0, v};
+    case topology::ExpansionOrderKind::random:
+      return {std::int64_t(kind), 0, 0, std::int64_t(splitmix(order_.seed ^ splitmix(v)) >> 1)};
+    case topology::ExpansionOrderKind::priority:
+      break;
+  }
+  const std::int64_t kk = k == 0 ? 4 : k;
+  const std::int64_t n =
+      kind == Kind::simple ? -std::int64_t(expanded_neighbors) : std::int64_t(expanded_neighbors);
+  return {std::int64_t(kind), kk, n, v};
+}
+
+}  // namespace cmx::algorithm::detail
