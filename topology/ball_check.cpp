@@ -160,11 +160,12 @@ struct VertexStar {
   std::size_t boundary_link_edges = 0;  // link edges on the boundary
 };
 
-VertexStar vertex_star(const TetMesh& m, const Adjacency& adj, VertexId a, const std::vector<TetId>& star) {
+VertexStar vertex_star(const TetMesh& m, const Adjacency& adj, VertexId a, const std::vector<TetId>& star,
+                       UnionFind& pieces) {
   const auto pos = [&](TetId t) {
     return static_cast<std::uint32_t>(std::lower_bound(star.begin(), star.end(), t) - star.begin());
   };
-  UnionFind pieces(star.size());
+  pieces.reset(star.size());
   VertexStar s;
   s.pieces = star.size();
   for (TetId t : star) {
@@ -202,8 +203,9 @@ std::size_t edge_fan_size(const TetMesh& m, const Adjacency& adj, VertexId a, Ve
 // Edges ab (b > a) around vertex a whose tets form more than one fan; counts a's link vertices
 // and, into edges, the edges ab with b > a.
 Failure edge_failure(const TetMesh& m, const Adjacency& adj, VertexId a, const std::vector<TetId>& star,
-                     const BallVerdict& v, std::size_t& link_vertices, std::size_t& edges) {
-  std::vector<std::pair<VertexId, TetId>> by_other;
+                     const BallVerdict& v, std::size_t& link_vertices, std::size_t& edges,
+                     std::vector<std::pair<VertexId, TetId>>& by_other) {
+  by_other.clear();
   for (TetId t : star)
     for (VertexId b : m.tet(t))
       if (b != a) by_other.push_back({b, t});
@@ -229,14 +231,17 @@ Failure edge_failure(const TetMesh& m, const Adjacency& adj, VertexId a, const s
 // Per vertex a: its edges are manifold (one fan each), its tets one face-connected piece, its
 // link a disc (boundary vertex) or a sphere (interior). Counts the edges.
 Failure vertex_star_failure(const TetMesh& m, const Adjacency& adj, const BallVerdict& v, std::size_t& edges) {
+  // Buffers reused from vertex to vertex: this loop runs for every star a local repair grows.
   std::vector<TetId> star;
+  std::vector<std::pair<VertexId, TetId>> by_other;
+  UnionFind pieces;
   for (VertexId a{0}; a < m.num_vertices(); ++a) {
     const auto ts = m.tets_of(a);
     star.assign(ts.begin(), ts.end());
     std::sort(star.begin(), star.end());
-    const VertexStar s = vertex_star(m, adj, a, star);
+    const VertexStar s = vertex_star(m, adj, a, star, pieces);
     std::size_t link_vertices = 0;
-    if (auto f = edge_failure(m, adj, a, star, v, link_vertices, edges)) return f;
+    if (auto f = edge_failure(m, adj, a, star, v, link_vertices, edges, by_other)) return f;
     if (s.pieces != 1)
       return fail(v, BallFailure::non_manifold_vertex, {a},
                   "vertex " + std::to_string(a) + ": its tets form " + std::to_string(s.pieces) +

@@ -10,7 +10,12 @@ namespace cmx::topology {
 
 class UnionFind {
  public:
-  explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
+  explicit UnionFind(std::size_t n = 0) { reset(n); }
+  // n singletons again, keeping the storage (for callers that run many small unions).
+  void reset(std::size_t n) {
+    parent_.resize(n);
+    std::iota(parent_.begin(), parent_.end(), 0u);
+  }
   // The representative of x's set. Amortised near-constant time.
   std::uint32_t find(std::uint32_t x) {
     while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
