@@ -22,7 +22,9 @@
 #include "cmx_version.hpp"
 #include "io/boundary.hpp"
 #include "io/orientation.hpp"
+#include "io/read_facets.hpp"
 #include "topology/ball_check.hpp"
+#include "topology/coherent_orientation.hpp"
 #include "topology/union_find.hpp"
 
 namespace cmx::cli {
@@ -32,7 +34,7 @@ namespace {
 using io::TetMeshData;
 
 const HelpText help = {
-    "usage: cmx info MESH [--json] [--source]\n",
+    "usage: cmx info MESH [--json] [--source | --facets]\n",
     "Prints counts (vertices, edges, faces, tets; boundary vertices, edges, faces), Euler\n"
     "characteristics, the ball verdict with its reason, the exact orientation signs with their\n"
     "verdict, valence histograms and the bounding box.\n"
@@ -43,7 +45,11 @@ const HelpText help = {
     "minority counts as inverted) or flat tets (some of zero volume, whatever the others). A ball\n"
     "given with placeholder coordinates is a ball whose orientation is not consistent.\n"
     "A map (.tmap, as cmx map writes it) is described by its target geometry, or with --source by\n"
-    "its source geometry; the tets are read as stored, so the verdicts check the map.\n",
+    "its source geometry; the tets are read as stored, so the verdicts check the map.\n"
+    "A facet list (a .facets file, or any file with --facets: four vertex ids per tet, plain or\n"
+    "[[a,b,c,d],...], docs/formats.md) has no coordinates: its tets are first oriented alike\n"
+    "(topology::orient_coherently), then the counts and the ball verdict follow; the orientation line\n"
+    "says whether they could be, and there is no bounding box.\n",
     "Exit status: 0 when the file was read (whatever the verdicts); 2 bad command line; 3 unreadable\n"
     "or malformed file (a directory, a missing file: the reason is given).\n"};
 
@@ -209,6 +215,73 @@ std::string orientation_json(const Orientation& o) {
   return out + "}";
 }
 
+// A facet list's counts and ball verdict, on its tets oriented alike (no coordinates: the
+// orientation reported is whether that was possible).
+struct FacetSummary {
+  Summary counts;
+  io::FacetList list;
+  topology::CoherentOrientation orientation;
+};
+
+FacetSummary summarise_facets(io::FacetList list) {
+  FacetSummary f;
+  topology::TetMesh mesh(list.vertex_count, std::span<const topology::TetIndices>(list.tets));
+  f.orientation = topology::orient_coherently(mesh);
+  TetMeshData data;
+  data.positions.resize(list.vertex_count);
+  for (topology::TetId t : mesh.live_tets()) data.tets.push_back(topology::indices_of(mesh.tet(t)));
+  Summary& s = f.counts;
+  s.vertices = list.vertex_count;
+  s.tets = data.tets.size();
+  count_simplices(data, s);
+  s.components = count_components(data);
+  count_boundary(data, s);
+  const topology::BallVerdict ball = topology::check_ball(mesh);
+  s.is_ball = f.orientation.ok && ball.ok;
+  s.reason = !f.orientation.ok ? f.orientation.message
+             : ball.ok         ? "connected 3-manifold whose boundary is one 2-sphere, Euler characteristic 1"
+                               : ball.message;
+  f.list = std::move(list);
+  return f;
+}
+
+void print_facets_json(const std::string& path, const FacetSummary& f) {
+  const Summary& s = f.counts;
+  std::printf("{\"cmx_version\": %s, \"file\": %s, \"facet_list\": true, \"numbered_from\": %d, \"label\": %s,\n",
+              json_quote(cmx_version).c_str(), json_quote(path).c_str(), f.list.one_based ? 1 : 0,
+              json_quote(f.list.label).c_str());
+  std::printf(" \"vertices\": %zu, \"edges\": %zu, \"faces\": %zu, \"tets\": %zu,\n", s.vertices, s.edges, s.faces, s.tets);
+  std::printf(" \"boundary_vertices\": %zu, \"boundary_edges\": %zu, \"boundary_faces\": %zu, \"boundary_components\": %zu,\n",
+              s.boundary_vertices, s.boundary_edges, s.boundary_faces, s.boundary_components);
+  std::printf(" \"interior_vertices\": %zu, \"components\": %zu,\n", s.vertices - s.boundary_vertices - s.isolated_vertices,
+              s.components);
+  std::printf(" \"euler_characteristic\": %ld, \"boundary_euler_characteristic\": %ld,\n", s.euler, s.boundary_euler);
+  std::printf(" \"is_ball\": %s, \"reason\": %s,\n", s.is_ball ? "true" : "false", json_quote(s.reason).c_str());
+  std::printf(" \"orientation\": {\"coherent\": %s, \"turned\": %zu},\n", f.orientation.ok ? "true" : "false",
+              f.orientation.flipped);
+  std::printf(" \"vertex_valence_histogram\": %s,\n \"edge_valence_histogram\": %s}\n", histogram_json(s.vertex_valence).c_str(),
+              histogram_json(s.edge_valence).c_str());
+}
+
+void print_facets_text(const std::string& path, const FacetSummary& f) {
+  const Summary& s = f.counts;
+  std::printf("file: %s\n", path.c_str());
+  std::printf("facet list%s%s: ids numbered from %d%s, no coordinates\n", f.list.label.empty() ? "" : " ",
+              f.list.label.c_str(), f.list.one_based ? 1 : 0,
+              f.list.one_based ? " (named below from 0: the file's id minus 1)" : "");
+  std::printf("vertices %zu, edges %zu, faces %zu, tets %zu\n", s.vertices, s.edges, s.faces, s.tets);
+  std::printf("boundary: vertices %zu, edges %zu, faces %zu, components %zu; interior vertices %zu\n", s.boundary_vertices,
+              s.boundary_edges, s.boundary_faces, s.boundary_components, s.vertices - s.boundary_vertices - s.isolated_vertices);
+  std::printf("Euler characteristic %ld (boundary %ld), connected components %zu\n", s.euler, s.boundary_euler, s.components);
+  std::printf("ball: %s (%s)\n", s.is_ball ? "yes" : "no", s.reason.c_str());
+  if (f.orientation.ok)
+    std::printf("orientation: the tets can be oriented alike (%zu of %zu turned)\n", f.orientation.flipped, s.tets);
+  else
+    std::printf("orientation: the tets cannot be oriented alike (%s)\n", f.orientation.message.c_str());
+  std::printf("vertex valence (edges per vertex):%s\n", histogram_text(s.vertex_valence).c_str());
+  std::printf("edge valence (tets per edge):%s\n", histogram_text(s.edge_valence).c_str());
+}
+
 void print_json(const std::string& path, const Summary& s) {
   std::printf("{\"cmx_version\": %s, \"file\": %s,\n", json_quote(cmx_version).c_str(), json_quote(path).c_str());
   std::printf(" \"vertices\": %zu, \"edges\": %zu, \"faces\": %zu, \"tets\": %zu,\n", s.vertices, s.edges, s.faces, s.tets);
@@ -251,7 +324,7 @@ void print_text(const std::string& path, const Summary& s) {
 
 int run(const std::vector<std::string>& args) {
   std::string path;
-  bool json = false, source = false;
+  bool json = false, source = false, facets = false;
   CommandLine line("info", help);
   line.app()
       .add_option("MESH", path, "the mesh file: .ovm .vtk .vtu .mesh .msh .node/.ele, or a map .tmap")
@@ -259,11 +332,18 @@ int run(const std::vector<std::string>& args) {
       ->type_name("");
   line.app().add_flag("--json", json, "one JSON object on stdout (with cmx_version)");
   line.app().add_flag("--source", source, "of a .tmap: describe its source geometry (default: its target)");
+  line.app().add_flag("--facets", facets, "read MESH as a facet list (as a .facets file is read anyway)");
   line.quiet_flag()->description("accepted for uniformity: info prints only its results");
   if (const auto done = line.parse(args)) return *done;
   io::ReadOptions keep;
   keep.orientation = io::Orientation::keep;
   if (source && !io::is_map_path(path)) usage_error("--source applies to a map (.tmap) only");
+  if (facets || io::is_facet_list_path(path)) {
+    const FacetSummary f = summarise_facets(io::read_facet_list_file(path));
+    if (json) print_facets_json(path, f);
+    else print_facets_text(path, f);
+    return exit_ok;
+  }
   const TetMeshData mesh = read_mesh_or_map(path, source ? io::MapGeometry::source : io::MapGeometry::target, keep);
   const Summary s = summarise(mesh);
   if (json) print_json(path, s);

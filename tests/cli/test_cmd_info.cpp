@@ -94,3 +94,55 @@ TEST_CASE("cmx convert: by extension, normalising orientation") {
   CHECK(run_cmx({"convert", in, in + ".obj"}).exit_code == 2);
   CHECK(run_cmx({"convert", in + ".missing.vtk", out}).exit_code == 3);
 }
+
+TEST_CASE("cmx info on facet lists: oriented first, then counted and checked, with no coordinates") {
+  // Four tets around the edge (1, 2), listed in arbitrary vertex orders, numbered from 1.
+  const auto path = write_temp_file("octahedron = [[1,2,3,4], [2,1,4,5],\n [1,2,5,6], [6,3,2,1]]\n", ".facets");
+  const auto t = run_cmx({"info", path});
+  INFO(t.out << t.err);
+  CHECK(t.exit_code == 0);
+  CHECK(t.out.find("facet list octahedron: ids numbered from 1 (named below from 0") != std::string::npos);
+  CHECK(t.out.find("vertices 6, edges 13, faces 12, tets 4") != std::string::npos);
+  CHECK(t.out.find("ball: yes (") != std::string::npos);
+  CHECK(t.out.find("orientation: the tets can be oriented alike (") != std::string::npos);
+  CHECK(t.out.find("bounding box") == std::string::npos);
+  const auto j = run_cmx({"info", path, "--json"});
+  CHECK(j.out.find("\"facet_list\": true, \"numbered_from\": 1, \"label\": \"octahedron\"") != std::string::npos);
+  CHECK(j.out.find("\"is_ball\": true") != std::string::npos);
+  CHECK(j.out.find("\"interior_vertices\": 0") != std::string::npos);
+  CHECK(j.out.find("\"edge_valence_histogram\": {\"1\": 4, \"2\": 8, \"4\": 1}") != std::string::npos);
+  // Any file with --facets; a face in three tets is no ball, and says why.
+  const auto three = write_temp_file("0 1 2 3\n0 1 2 4\n0 1 2 5\n", ".txt");
+  const auto n = run_cmx({"info", three, "--facets"});
+  CHECK(n.exit_code == 0);
+  CHECK(n.out.find("ball: no (face (0 1 2) lies in three or more tets)") != std::string::npos);
+  // Malformed: exit 3 with file:line.
+  const auto bad = write_temp_file("0 1 2 3\n0 1 2\n", ".facets");
+  const auto b = run_cmx({"info", bad});
+  CHECK(b.exit_code == 3);
+  CHECK(b.err.find("cmx info: " + bad + ":2: ") == 0);
+}
+
+TEST_CASE("cmx info on Rudin's ball as a facet list: a ball with the published f-vector, every vertex on the boundary") {
+  // Rudin's unshellable triangulation of a tetrahedron (Bull. AMS 64, 1958), its 41 facets with
+  // vertices a..n as the Macaulay2 SimplicialComplexes package lists them (rudinBallComplex).
+  const char* facets =
+      "klmn hlmn ikmn fjmn djmn fimn dhmn jkln bjln bhln cjkn eikn egkn cgkn cfjn bdjn efin bdhn gklm eilm cilm "
+      "ehlm cglm aikm agkm efim acim dehm acgm fjkl fhkl dhkl dgkl bfjl bfhl dehl cdgl cfjk aeik aegk cdgk";
+  std::string list;
+  for (const char* p = facets; *p; ++p) {
+    if (*p == ' ') {
+      list += '\n';
+    } else {
+      list += std::to_string(*p - 'a' + 1);
+      list += p[1] && p[1] != ' ' ? " " : "";
+    }
+  }
+  const auto j = run_cmx({"info", write_temp_file(list + "\n", ".facets"), "--json"});
+  INFO(j.out << j.err);
+  CHECK(j.exit_code == 0);
+  CHECK(j.out.find("\"vertices\": 14, \"edges\": 66, \"faces\": 94, \"tets\": 41") != std::string::npos);
+  CHECK(j.out.find("\"is_ball\": true") != std::string::npos);
+  CHECK(j.out.find("\"interior_vertices\": 0") != std::string::npos);
+  CHECK(j.out.find("\"coherent\": true") != std::string::npos);
+}
