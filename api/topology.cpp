@@ -90,8 +90,8 @@ TopologicalExpansion expand_topologically(std::span<const Tet> tets, std::size_t
   topology::TopologicalExpansionResult r = topology::topological_expansion(mesh, *parsed, unexpanded);
   TopologicalExpansion out;
   out.complete = !r.stuck;
-  out.sequence = topology::indices_of<topology::VertexTag>(r.sequence);
-  out.remaining = topology::indices_of<topology::VertexTag>(r.remaining);
+  out.sequence = topology::indices_of(r.sequence);
+  out.remaining = topology::indices_of(r.remaining);
   out.initially_simply_connected = initial.vertices == 0 || (initial.components == 1 && initial.euler == 1);
   return out;
 }

@@ -173,18 +173,26 @@ Orientation orientation_of(const TetMeshData& mesh) {
   return o;
 }
 
-Summary summarise(const TetMeshData& mesh) {
+const char* const ball_reason = "connected 3-manifold whose boundary is one 2-sphere, Euler characteristic 1";
+
+// What depends on the tets alone: the counts, components and the boundary surface.
+Summary count_complex(const TetMeshData& mesh) {
   Summary s;
   s.vertices = mesh.positions.size();
   s.tets = mesh.tets.size();
   count_simplices(mesh, s);
   s.components = count_components(mesh);
   count_boundary(mesh, s);
+  return s;
+}
+
+Summary summarise(const TetMeshData& mesh) {
+  Summary s = count_complex(mesh);
   bounding_box(mesh, s);
   s.orientation = orientation_of(mesh);
   const topology::BallVerdict ball = topology::check_ball(topology::TetMesh(s.vertices, mesh.tets));
   s.is_ball = ball.ok;
-  s.reason = ball.ok ? "connected 3-manifold whose boundary is one 2-sphere, Euler characteristic 1" : ball.message;
+  s.reason = ball.ok ? ball_reason : ball.message;
   return s;
 }
 
@@ -227,20 +235,14 @@ FacetSummary summarise_facets(io::FacetList list) {
   FacetSummary f;
   topology::TetMesh mesh(list.vertex_count, std::span<const topology::TetIndices>(list.tets));
   f.orientation = topology::orient_coherently(mesh);
-  TetMeshData data;
+  TetMeshData data;  // the counts read the tets and the vertex count only
   data.positions.resize(list.vertex_count);
   for (topology::TetId t : mesh.live_tets()) data.tets.push_back(topology::indices_of(mesh.tet(t)));
+  f.counts = count_complex(data);
   Summary& s = f.counts;
-  s.vertices = list.vertex_count;
-  s.tets = data.tets.size();
-  count_simplices(data, s);
-  s.components = count_components(data);
-  count_boundary(data, s);
   const topology::BallVerdict ball = topology::check_ball(mesh);
   s.is_ball = f.orientation.ok && ball.ok;
-  s.reason = !f.orientation.ok ? f.orientation.message
-             : ball.ok         ? "connected 3-manifold whose boundary is one 2-sphere, Euler characteristic 1"
-                               : ball.message;
+  s.reason = !f.orientation.ok ? f.orientation.message : ball.ok ? ball_reason : ball.message;
   f.list = std::move(list);
   return f;
 }

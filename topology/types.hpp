@@ -4,8 +4,8 @@
 
 #include <array>
 #include <cstdint>
-#include <limits>
 #include <initializer_list>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -44,7 +44,7 @@ inline std::vector<Tet> make_tets(std::initializer_list<TetIndices> list) {
 }
 // The integers of handles, for callers outside the layers (the public API, file writers).
 template <class Tag>
-std::vector<std::uint32_t> indices_of(std::span<const Handle<Tag>> handles) {
+std::vector<std::uint32_t> indices_of(const std::vector<Handle<Tag>>& handles) {
   return {handles.begin(), handles.end()};
 }
 template <class Tag, std::size_t N>

@@ -13,7 +13,7 @@ using cmx::topology::test::all_cells_but;
 namespace {
 BallVerdict verdict_of(std::size_t n, std::vector<TetIndices> tets) { return check_ball(TetMesh(n, tets)); }
 bool simplex_is(const BallVerdict& v, std::vector<std::uint32_t> s) {
-  std::vector<std::uint32_t> a = indices_of<VertexTag>(v.simplex);
+  std::vector<std::uint32_t> a = indices_of(v.simplex);
   std::sort(a.begin(), a.end());
   std::sort(s.begin(), s.end());
   return a == s;
