@@ -11,6 +11,7 @@
 #include "algorithm/embedding.hpp"
 #include "algorithm/verify/invariants.hpp"
 #include "algorithm/local/local_repair.hpp"
+#include "algorithm/local/remap_doubles.hpp"
 #include "algorithm/collapse/merge_pass.hpp"
 #include "algorithm/verify/output_statistics.hpp"
 #include "algorithm/problem/preprocess.hpp"
@@ -275,78 +276,6 @@ bool retry_globally(const MapOptions& options, const RunControl& control, const 
          !control.stopped();
 }
 
-// automatic: a finished map whose doubles are not valid. Its own doubles are then an initial map
-// of its refined mesh whose defects (a crowd near p_c) the local repair encloses in one star,
-// mapped afresh with well-spread neighbours (bench/RESULTS.md, "gargoyle_star's doubles"). Only
-// with time left: the repair is as slow as a global run on the star.
-bool remap_from_doubles(const MapOptions& options, const RunControl& control, const MapResult& r) {
-  return options.init == InitialMapKind::automatic && options.placement.arith.exact() &&
-         r.outcome == MapOutcome::success && r.doubles.checked && !r.doubles.check.valid() &&
-         !r.doubles.stopped_at_deadline && !control.stopped();
-}
-
-// The mapping problem of that second pass: the map's output mesh with its source positions, its
-// boundary at the map's exact target (the prescribed positions, refined), every vertex starting
-// at the map's doubles.
-MapProblem problem_from_doubles(const MapResult& r) {
-  MapProblem p;
-  p.tets = r.tets;
-  const auto exact = [](const HPoint& q) { return Point3{q.coordinate(0), q.coordinate(1), q.coordinate(2)}; };
-  for (const HPoint& q : r.source) p.source.push_back(exact(q));
-  const std::vector<char> boundary = topology::boundary_vertex_flags(topology::TetMesh(r.source.size(), r.tets));
-  for (std::uint32_t v = 0; v < boundary.size(); ++v)
-    if (boundary[v]) {
-      p.boundary_vertices.push_back(v);
-      p.boundary_positions.push_back(exact(r.target[v]));
-    }
-  // The nearest doubles, not the repaired ones: the repair spreads its moves over the crowd's
-  // neighbours, and the stars grown around them hold far more of the mesh than around the nearest
-  // doubles (bench/RESULTS.md, "gargoyle_star's doubles").
-  const auto nearest = [](const Rational& q) { return rational_from_double(to_double(q)); };
-  for (const HPoint& q : r.target)
-    p.initial_target.push_back({nearest(q.coordinate(0)), nearest(q.coordinate(1)), nearest(q.coordinate(2))});
-  return p;
-}
-
-// Runs that second pass on `r` and keeps its map when its doubles are valid, verified against the
-// original problem `in`; else `r` stands, its report saying so.
-void remap_doubles(const MapOptions& options, const VerificationInput& in, Clock::time_point start, MapResult& r) {
-  const std::size_t bad = r.doubles.check.inverted + r.doubles.check.degenerate;
-  MapOptions second = options;
-  second.init = InitialMapKind::given;
-  if (options.time_limit_seconds > 0) {
-    second.time_limit_seconds = options.time_limit_seconds - seconds_since(start);
-    if (second.time_limit_seconds <= 0) return;
-  }
-  const std::string before = r.stats.local.fallback.empty() ? "" : r.stats.local.fallback + "; ";
-  MapResult again = map_to_domain(problem_from_doubles(r), second);
-  if (!(again.outcome == MapOutcome::success && again.doubles.check.valid())) {
-    r.stats.local.fallback = before + "the doubles left " + std::to_string(bad) +
-                             " tets inverted or flat; re-mapping from them gave no valid doubles either";
-    return;
-  }
-  MapStatistics s = r.stats;
-  s.local = again.stats.local;
-  s.local.init = r.stats.local.init;
-  s.local.fallback = before + "the doubles left " + std::to_string(bad) + " tets inverted or flat; re-mapped from them (" +
-                     std::to_string(again.stats.local.stars) + " stars, " +
-                     std::to_string(again.stats.local.tets_in_stars) + " tets)";
-  s.collapsed += again.stats.collapsed;
-  s.chebyshev_moves = again.stats.chebyshev_moves, s.snap_repaired = again.stats.snap_repaired;
-  s.snap_rounds = again.stats.snap_rounds, s.snap_exact_rounds = again.stats.snap_exact_rounds;
-  s.seconds_double += again.stats.seconds_total;
-  r.tets = std::move(again.tets);
-  r.source = std::move(again.source);
-  r.target = std::move(again.target);
-  r.doubles = std::move(again.doubles);
-  output_statistics(r.tets.size(), r.target, s);
-  r.stats = s;
-  r.verification = verify_map(in, r.tets, r.source, r.target);
-  if (!r.verification.ok())
-    throw MapError(MapErrorKind::internal, "re-mapped from its doubles, the map fails verification: " +
-                                               r.verification.first_failure);
-}
-
 // A result holding only what `from` knew before any method ran: the input statistics, and the
 // local repair's, with `why` as its fallback reason.
 MapResult inputs_of(const MapResult& from, std::string why) {
@@ -392,9 +321,17 @@ MapResult map_to_domain(const MapProblem& given, const MapOptions& options) {
     }
     s.seconds_validate = seconds_since(start);
     RunControl control(options, start);
+    const auto remap_if_wanted = [&] {
+      if (!wants_remap_from_doubles(options, r) || control.stopped()) return;
+      const double left = options.time_limit_seconds > 0 ? options.time_limit_seconds - seconds_since(start) : 0;
+      if (options.time_limit_seconds > 0 && left <= 0) return;
+      const VerificationInput in{&problem.tets, &v.source, &problem.boundary_vertices, &v.boundary_positions};
+      remap_from_doubles(options, in, left, r);
+    };
     std::optional<MapResult> local;
     if (try_local(problem, v, options, control, r)) {
       if (!retry_globally(options, control, r)) {
+        remap_if_wanted();
         s.seconds_total = seconds_since(start);
         return r;
       }
@@ -418,10 +355,7 @@ MapResult map_to_domain(const MapProblem& given, const MapOptions& options) {
                                     "stitched doubles were not valid, gave no valid doubles either";
       r = std::move(*local);
     }
-    if (remap_from_doubles(options, control, r)) {
-      const VerificationInput in{&problem.tets, &v.source, &problem.boundary_vertices, &v.boundary_positions};
-      remap_doubles(options, in, start, r);
-    }
+    remap_if_wanted();
   } catch (const PrecisionLost& lost) {
     r.outcome = MapOutcome::precision_lost;
     r.loss = lost.loss();

@@ -85,6 +85,10 @@ struct MapOptions {
   bool merge = true;                          // ... and merge them, moving the vertex kept (merge_pass.hpp)
   bool flip_collapse = true;                  // ... and re-cut stars by flips first (flip_collapse.hpp)
   SnapPolicy snap = SnapPolicy::repair;       // double output (algorithm/doubles/double_output.hpp)
+  // The repair's last stage: a map whose doubles are still not valid is mapped again from them
+  // (algorithm/local/remap_doubles.hpp). Off inside that second pass and for a local repair's
+  // stars (their doubles are judged stitched).
+  bool remap_doubles = true;
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
   bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)
   std::size_t subclusters = 4;                // largest subcluster expanded at once, 2..4 (Sec. 4.2.5); 0 or 1: off

@@ -135,7 +135,8 @@ void add_local_options(CLI::App& app, MapArgs& a) {
              "flat in doubles or its stars would hold more than half of the tets, and\n"
              "after it when the stars' stitched doubles are not valid (the global map is\n"
              "then kept if its doubles are; the report's 'local' says which ran and\n"
-             "why). A file named like a keyword: ./auto")
+             "why; --snap repair's last stage follows every init). A file named like\n"
+             "a keyword: ./auto")
       ->type_name("INIT");
   add_parsed(app, "--threads", a.options.threads, [](const std::string& t) { return parse_integer(t, 0, 1024); },
              "stars mapped at once (default 0: the machine's cores); the output is\n"
@@ -180,7 +181,10 @@ void add_arithmetic_options(CLI::App& app, MapArgs& a) {
              "around the shrink point (exact), then re-centre the vertices of tets\n"
              "the doubles invert among their neighbours' doubles; a boundary vertex\n"
              "of an all-boundary tet that rounding breaks may take another double\n"
-             "within 1 ulp; chebyshev-pass = move every interior vertex to the\n"
+             "within 1 ulp; last, when they are still not valid, the map is mapped\n"
+             "again from its own nearest doubles by local repair, kept if its\n"
+             "doubles are valid;\n"
+             "chebyshev-pass = move every interior vertex to the\n"
              "Chebyshev centre of its star (exact map stays valid), then round;\n"
              "nearest = round and check; none = round, no check")
       ->type_name("POLICY");

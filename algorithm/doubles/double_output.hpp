@@ -17,7 +17,9 @@
 //                     (vertices crowded closer than doubles resolve move apart), then rounds in
 //                     which each such vertex is re-centred among its neighbours' *double*
 //                     positions: the Chebyshev centre of that star's kernel, rounded to the nearest
-//                     double, is taken when it is strictly inside (exact test).
+//                     double, is taken when it is strictly inside (exact test). Last, outside
+//                     this function, map_to_domain maps a map whose doubles are still not valid
+//                     again from its own nearest doubles (algorithm/local/remap_doubles.hpp).
 // Boundary vertices keep the nearest doubles of their prescribed positions (when a prescribed
 // position is not a double the double map's boundary differs from it by that rounding; a tet of
 // boundary vertices only that the rounding flattens cannot be repaired).

@@ -73,6 +73,7 @@ MapOptions star_options(const MapOptions& options, std::mutex& lock, RunControl&
                         std::size_t index) {
   MapOptions o = options;
   o.init = InitialMapKind::shrink;
+  o.remap_doubles = false;
   o.time_limit_seconds = 0;
   o.progress = nullptr;
   o.stop = [&lock, &control](std::string_view) {

@@ -1,7 +1,7 @@
 // Double output (paper Sec. 4.2.7): every --snap policy on small generated cases, the doubles'
 // verdict recounted on a second code path (exact homogeneous orientation of the doubles), the
-// exact map still verified after the Chebyshev moves, and a crowded map that rounding breaks and
-// repair mends.
+// exact map still verified after the Chebyshev moves, a crowded map that rounding breaks and
+// repair mends, and the same map re-mapped from its own nearest doubles.
 #include <doctest/doctest.h>
 
 #include <chrono>
@@ -9,6 +9,8 @@
 
 #include "algorithm/doubles/double_output.hpp"
 #include "algorithm/expansion/expansion_cone.hpp"
+#include "algorithm/local/remap_doubles.hpp"
+#include "algorithm/problem/validate_problem.hpp"
 #include "algorithm/map.hpp"
 #include "algorithm/run_control.hpp"
 #include "arith/rounding.hpp"
@@ -130,6 +132,7 @@ namespace {
 // 2^-80 of a boundary neighbour (on the segment between them, still strictly inside its star's
 // kernel, checked exactly): its nearest double is the neighbour's, so rounding flattens tets.
 struct CrowdedMap {
+  MapProblem problem;
   MapResult exact;  // the map before the move
   Embedding e;      // with the crowded vertex
 };
@@ -138,7 +141,7 @@ CrowdedMap crowded_map() {
   const MapProblem p = problem_from(perturbed_grid(3, 3, 3, 3), "sphere");
   MapOptions o;
   o.snap = SnapPolicy::none;
-  CrowdedMap out{map_checked(p, o), {}};
+  CrowdedMap out{p, map_checked(p, o), {}};
   const MapResult& r = out.exact;
   Embedding& e = out.e;
   e.mesh = topology::TetMesh(r.target.size(), r.tets);
@@ -276,4 +279,42 @@ TEST_CASE(
   CHECK(r.stats.snap_boundary_rerounded == 1);
   CHECK(r.doubles.target[3][2] == std::nextafter(1.0, 2.0));
   for (int v = 0; v < 3; ++v) CHECK(r.doubles.target[std::size_t(v)] == plain.doubles.target[std::size_t(v)]);
+}
+
+// The repair's last stage on the crowded map, run directly (the earlier stages would mend this
+// one): its nearest doubles, the crowded vertex on its boundary neighbour, are an initial map of
+// its mesh whose flat tets get a star of their own; the map kept is verified against the
+// original problem and its doubles are valid.
+TEST_CASE("a crowded map re-mapped from its own nearest doubles: valid doubles, verified against the problem") {
+  CrowdedMap m = crowded_map();
+  MapResult r = m.exact;
+  r.target = m.e.target;
+  Embedding rounded = m.e;
+  r.doubles = make_double_map(rounded, SnapPolicy::nearest, {});
+  REQUIRE(r.doubles.check.degenerate > 0);
+  MapOptions o;
+  CHECK(wants_remap_from_doubles(o, r));
+  MapOptions no;
+  no.snap = SnapPolicy::nearest;
+  CHECK_FALSE(wants_remap_from_doubles(no, r));
+  no = o;
+  no.remap_doubles = false;  // the second pass itself, and a local repair's stars
+  CHECK_FALSE(wants_remap_from_doubles(no, r));
+
+  const MapProblem again = problem_from_doubles(r);
+  CHECK(again.tets == r.tets);
+  REQUIRE(again.initial_target.size() == r.target.size());
+  for (std::size_t v = 0; v < r.target.size(); ++v)
+    for (int i = 0; i < 3; ++i)
+      CHECK(again.initial_target[v][std::size_t(i)] == rational_from_double(r.doubles.target[v][std::size_t(i)]));
+
+  const ValidatedProblem v = validate_problem(m.problem, FilterPolicy{}, lp::ChebyshevOptions{});
+  const VerificationInput in{&m.problem.tets, &v.source, &m.problem.boundary_vertices, &v.boundary_positions};
+  remap_from_doubles(o, in, 0, r);
+  CHECK_MESSAGE(r.verification.ok(), r.verification.first_failure);
+  CHECK(r.doubles.check.valid());
+  CHECK(recount(r.tets, r.doubles.target).degenerate == 0);
+  CHECK(recount(r.tets, r.doubles.target).inverted == 0);
+  CHECK(r.stats.local.stars >= 1);
+  CHECK(r.stats.local.fallback.find("re-mapped from them") != std::string::npos);
 }

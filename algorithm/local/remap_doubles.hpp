@@ -1,0 +1,29 @@
+#pragma once
+// The last stage of `--snap repair` (algorithm/doubles/double_output.hpp): a finished exact map
+// whose doubles are still not a valid map is mapped again from its own nearest doubles. They are
+// an initial map of its refined mesh whose defects (a crowd of vertices near p_c, closer together
+// than doubles resolve there) the local repair (local_repair.hpp) encloses in stars, each mapped
+// afresh with a shrink point of its own and well-spread neighbours (docs/algorithm/local.md,
+// "Initial maps"; measured in bench/results/map-local-repair.md, "gargoyle_star's doubles").
+#include "algorithm/map.hpp"
+#include "algorithm/verify/verify_map.hpp"
+
+namespace cmx::algorithm {
+
+// Whether `r` calls for that second pass: an exact run under the repair policy with
+// MapOptions::remap_doubles that ended in a map whose doubles were checked and are not valid,
+// with the double output not cut by the time limit.
+bool wants_remap_from_doubles(const MapOptions& options, const MapResult& r);
+
+// The problem of the second pass: r's output mesh with its source positions, the boundary at r's
+// exact target (the prescribed positions, refined), and every vertex starting at the nearest
+// double of r's target.
+MapProblem problem_from_doubles(const MapResult& r);
+
+// Runs the second pass with `options` (init given, no third pass, the time limit replaced by
+// `time_left` seconds, 0 for none) and keeps its map when its doubles are valid, verified against the original problem
+// `in`; else `r` stands. Either way r.stats.local.fallback says what was done. Throws
+// MapError(internal) when a kept map fails verification.
+void remap_from_doubles(const MapOptions& options, const VerificationInput& in, double time_left, MapResult& r);
+
+}  // namespace cmx::algorithm
