@@ -6,6 +6,7 @@
 //   slab:NX,NY[,L]     NX*NY*L cells, L = 1 (default) or 2 layers
 //   bings-house[:S]    a ball whose cluster mesh is Bing's house (a NOBUENOSS), S cells per unit
 //   knotted-hole       Furch's knotted hole (its cluster mesh erodes to a NOBUENOSS)
+//   fingers:F,W,L      a palm with F bent fingers of W x W cells and length L (thin parts)
 // --perturb SEED jitters every vertex by a dyadic offset of at most A (default 0.25) per axis,
 // keeping only offsets after which all its tets stay strictly positive (exact). OUT's extension
 // picks the format (io::write_tet_mesh): .ovm keeps the exact positions (as "str_exact_position";
@@ -53,7 +54,7 @@ std::optional<std::vector<std::uint32_t>> parse_dimensions(std::string_view text
 }
 
 struct ShapeRequest {
-  char kind = 0;  // 'g' grid, 'b' ball, 's' slab, 'h' Bing's house, 'k' knotted hole
+  char kind = 0;  // 'g' grid, 'b' ball, 's' slab, 'h' Bing's house, 'k' knotted hole, 'f' fingers
   std::vector<std::uint32_t> dims;
 };
 
@@ -69,6 +70,7 @@ std::optional<ShapeRequest> parse_shape(const std::string& text) {
   if (name == "grid" && n == 3) return ShapeRequest{'g', *dims};
   if (name == "ball" && n == 1) return ShapeRequest{'b', *dims};
   if (name == "bings-house" && n == 1) return ShapeRequest{'h', *dims};
+  if (name == "fingers" && n == 3) return ShapeRequest{'f', *dims};
   if (name == "slab" && (n == 2 || (n == 3 && (*dims)[2] <= 2))) return ShapeRequest{'s', *dims};
   return std::nullopt;
 }
@@ -78,6 +80,7 @@ std::uint64_t cell_count(const ShapeRequest& s) {
   if (s.kind == 'b') return 8 * std::uint64_t{d[0]} * d[0] * d[0];  // the bounding grid
   if (s.kind == 'h') return 400 * std::uint64_t{d[0]} * d[0] * d[0];  // the bounding box, roughly
   if (s.kind == 'k') return 0;  // fixed, about 10,000 cells
+  if (s.kind == 'f') return (2 * std::uint64_t{d[0]} + 1) * d[1] * (4 * std::uint64_t{d[1]} + d[2] + 2) * (4 * std::uint64_t{d[1]} + d[2]);
   std::uint64_t cells = std::uint64_t{d[0]} * d[1];
   return cells * (d.size() == 3 ? d[2] : 1);
 }
@@ -94,7 +97,7 @@ void add_options(CLI::App& app, GenerateArgs& a) {
     const auto s = parse_shape(text);
     if (!s)
       throw std::invalid_argument("bad shape '" + text +
-                                  "' (grid:NX,NY,NZ, ball:R, slab:NX,NY[,1|2], bings-house[:S] or knotted-hole)");
+                                  "' (grid:NX,NY,NZ, ball:R, slab:NX,NY[,1|2], bings-house[:S], knotted-hole or fingers:F,W,L)");
     if (cell_count(*s) > max_cells) throw std::invalid_argument("'" + text + "' has more than " + std::to_string(max_cells) + " cells");
     a.shape_text = text;
     return *s;
@@ -103,9 +106,10 @@ void add_options(CLI::App& app, GenerateArgs& a) {
              "grid:NX,NY,NZ (Freudenthal grid of unit cells), ball:R (voxelised ball\n"
              "of radius R cells), slab:NX,NY[,LAYERS] (1 or 2 layers of cells),\n"
              "bings-house[:S] (a ball whose interior is Bing's house, S even in\n"
-             "[4,64], default 4), knotted-hole (Furch's knotted hole); the last two\n"
-             "get stuck in a NOBUENOSS under plain greedy expansion; at most\n"
-             "2000000 cells")
+             "[4,64], default 4), knotted-hole (Furch's knotted hole); these two\n"
+             "get stuck in a NOBUENOSS under plain greedy expansion;\n"
+             "fingers:F,W,L (a palm with F bent fingers of W x W cells, length L;\n"
+             "F 1-16, W 2-8, L 1-400); at most 2000000 cells (of the bounding grid)")
       ->type_name("SHAPE")
       ->required();
   add_parsed(app, "--perturb", a.seed, [](const std::string& t) { return std::optional(parse_seed(t)); },
@@ -134,6 +138,7 @@ generators::GeneratedDomain generate(const GenerateArgs& a) {
       case 'b': return generators::voxel_ball(d[0], seed, amplitude);
       case 'h': return generators::bings_house(d[0], seed, amplitude);
       case 'k': return generators::knotted_hole(seed, amplitude);
+      case 'f': return generators::thin_fingers(d[0], d[1], d[2], seed, amplitude);
       default: return generators::thin_slab(d[0], d[1], seed, d.size() == 3 ? d[2] : 1, amplitude);
     }
   } catch (const std::invalid_argument& e) {

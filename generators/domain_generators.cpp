@@ -133,4 +133,45 @@ GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude) {
   return d;
 }
 
+namespace {
+
+// The cells of thin_fingers (header comment) in a grid of nx x ny x nz cells.
+struct Hand {
+  std::uint32_t fingers, width, length;
+  std::uint32_t nx() const { return (2 * fingers + 1) * width; }
+  std::uint32_t margin() const { return length / 2 + 1; }  // room for the bends in y
+  std::uint32_t ny() const { return 4 * width + 2 * margin(); }
+  std::uint32_t nz() const { return 4 * width + length; }
+  bool in_palm(std::uint32_t j, std::uint32_t k) const {
+    return k < 4 * width && j >= margin() && j < margin() + 4 * width;
+  }
+  bool in_finger(std::uint32_t i, std::uint32_t j, std::uint32_t k) const {
+    if (k < 4 * width || (i / width) % 2 == 0) return false;
+    const std::uint32_t f = i / width / 2, h = k - 4 * width;
+    const std::int64_t bend = std::int64_t{h} * h / (2 * std::int64_t{length});
+    const std::int64_t y0 = std::int64_t{margin()} + 3 * width / 2 + (f % 2 == 0 ? bend : -bend);
+    return std::int64_t{j} >= y0 && std::int64_t{j} < y0 + width;
+  }
+};
+
+}  // namespace
+
+GeneratedDomain thin_fingers(std::uint32_t fingers, std::uint32_t width, std::uint32_t length, std::uint64_t perturb_seed,
+                             double amplitude) {
+  if (fingers < 1 || fingers > 16) throw std::invalid_argument("thin_fingers: 1 to 16 fingers");
+  if (width < 2 || width > 8) throw std::invalid_argument("thin_fingers: the width must be 2 to 8 cells");
+  if (length < 1 || length > 400) throw std::invalid_argument("thin_fingers: the length must be 1 to 400 cells");
+  check_amplitude(amplitude, "thin_fingers");
+  const Hand hand{fingers, width, length};
+  const std::uint32_t nx = hand.nx(), ny = hand.ny(), nz = hand.nz();
+  std::vector<char> keep(std::size_t{nx} * ny * nz, 0);
+  for (std::uint32_t k = 0; k < nz; ++k)
+    for (std::uint32_t j = 0; j < ny; ++j)
+      for (std::uint32_t i = 0; i < nx; ++i)
+        keep[i + std::size_t{nx} * (j + std::size_t{ny} * k)] = hand.in_palm(j, k) || hand.in_finger(i, j, k) ? 1 : 0;
+  GeneratedDomain d = from_grid(topology::voxel_complex(nx, ny, nz, keep), 0);
+  perturb(d, perturb_seed, amplitude);
+  return d;
+}
+
 }  // namespace cmx::generators

@@ -16,6 +16,14 @@
 //                   Bing's house, so the cluster mesh is a NOBUENOSS from the start.
 //   knotted_hole    topology::knotted_hole_ball: Furch's knotted hole, whose cluster mesh erodes
 //                   to a NOBUENOSS under greedy expansion.
+//   thin_fingers    a hand: a palm of (2F+1)W x 4W x 4W cells with F fingers of W x W cells and
+//                   L cells' length on its top, W cells apart, each bent along a parabola
+//                   (layer h above the palm shifted by floor(h^2 / 2L) cells in y, alternately
+//                   +y and -y: about L/2 at the tip). Tubes of width W/L (0.04 to 0.2 for the
+//                   benchmark family), the thin parts of real meshes (fingers, tentacles) on
+//                   which the global method has run out of time. A ball for W >= 2: consecutive
+//                   layers of a finger overlap in W - 1 >= 1 cells, so no two cells meet in an
+//                   edge alone.
 //
 // Perturbation (amplitude > 0): every vertex, interior and boundary alike, in index order, draws
 // an offset amplitude * (2k + 1 - 2^17) / 2^17 per axis with k uniform below 2^17 (a dyadic number
@@ -59,5 +67,8 @@ inline constexpr double default_perturb_amplitude = 0.25;
 [[nodiscard]] GeneratedDomain bings_house(std::uint32_t scale, std::uint64_t perturb_seed,
                                           double amplitude = default_perturb_amplitude);
 [[nodiscard]] GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude = default_perturb_amplitude);
+// fingers in [1, 16], width in [2, 8], length in [1, 400] (std::invalid_argument otherwise).
+[[nodiscard]] GeneratedDomain thin_fingers(std::uint32_t fingers, std::uint32_t width, std::uint32_t length,
+                                           std::uint64_t perturb_seed, double amplitude = default_perturb_amplitude);
 
 }  // namespace cmx::generators

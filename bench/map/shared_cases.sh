@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Runs `cmx map` on every case under ../shared/data (when present) and prints one table row per
 # case: status, wall time, time per input tet, growth, largest coordinate bits, double validity,
-# whether a second run writes a bit-identical .tmap, and the independent checker's verdict
-# (../shared/tools/verify_tmap.py).
+# whether a second run writes a bit-identical .tmap (RERUN=0 skips it), and the independent
+# checkers' verdicts on the exact map (../shared/tools/verify_tmap.py) and on the written doubles
+# (../shared/tools/verify_doubles.py on the .vtk).
 # Usage: bench/map/shared_cases.sh [CMX_BINARY] [OUT_DIR] [extra cmx map options...]
+# CASES=REGEX runs only the cases whose name matches (grep -E), e.g. CASES='_star$'.
 set -uo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 cmx=${1:-$here/build/release/cli/cmx}
@@ -14,13 +16,14 @@ data=$here/../shared/data
 tools=$here/../shared/tools
 [ -d "$data" ] || { echo "no shared data at $data"; exit 0; }
 mkdir -p "$out"
-printf '| case | status | tets in | seconds | s / input tet | growth | max bits | double valid | identical rerun | verify_tmap |\n'
-printf '|---|---|---|---|---|---|---|---|---|---|\n'
+printf '| case | status | tets in | seconds | s / input tet | growth | max bits | double valid | identical rerun | verify_tmap | verify_doubles |\n'
+printf '|---|---|---|---|---|---|---|---|---|---|---|\n'
 run_case() {  # name domain boundary-option boundary-path
   local name=$1 domain=$2 opt=$3 bnd=$4
+  [ -z "${CASES:-}" ] || echo "$name" | grep -Eq "$CASES" || return 0
   local report=$out/$name.json
-  rm -f "$out/$name.tmap" "$report"
-  "$cmx" map "$domain" "$opt" "$bnd" -o "$out/$name" --report "$report" --quiet "${extra[@]}" >/dev/null 2>"$out/$name.err"
+  rm -f "$out/$name.tmap" "$out/$name.vtk" "$report"
+  "$cmx" map "$domain" "$opt" "$bnd" -o "$out/$name" --format vtk --report "$report" --quiet "${extra[@]}" >/dev/null 2>"$out/$name.err"
   local rc=$?
   local status tets secs growth bits dv check
   status=$(python3 -c "import json;print(json.load(open('$report'))['status'])" 2>/dev/null || echo "rc=$rc")
@@ -32,8 +35,11 @@ print(r['input']['tets'], round(r['seconds']['total'], 3), round(r['output']['gr
       'yes' if r['verdict']['double_valid'] else 'no')
 PY
 )
-    "$cmx" map "$domain" "$opt" "$bnd" -o "$out/$name.again" --quiet "${extra[@]}" >/dev/null 2>&1
-    local same; same=$(cmp -s "$out/$name.tmap" "$out/$name.again.tmap" && echo yes || echo NO)
+    local same=skipped
+    if [ "${RERUN:-1}" != 0 ]; then
+      "$cmx" map "$domain" "$opt" "$bnd" -o "$out/$name.again" --quiet "${extra[@]}" >/dev/null 2>&1
+      same=$(cmp -s "$out/$name.tmap" "$out/$name.again.tmap" && echo yes || echo NO)
+    fi
     local per; per=$(python3 -c "print('%.2e' % ($secs / $tets))")
     # (verify_tmap exits 1 on an invalid map: the verdict is read from its JSON, not its status)
     check=$(python3 "$tools/verify_tmap.py" "$domain" "$bnd" "$out/$name.tmap" 2>&1 |
@@ -45,9 +51,13 @@ PY
       check="$check (exact orientations: $(python3 "$here/bench/map/exact_orientation.py" "$out/$name.tmap" 2>&1 |
               python3 -c "import json,sys;r=json.loads(sys.stdin.read());print('%d target, %d source not positive' % (r['target_nonpositive'], r['source_nonpositive']))" 2>/dev/null || echo error))"
     fi
-    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "$status" "$tets" "$secs" "$per" "$growth" "$bits" "$dv" "$same" "$check"
+    local doubles
+    doubles=$(python3 "$tools/verify_doubles.py" "$out/$name.vtk" 2>&1 | tail -1 |
+              python3 -c "import json,sys;r=json.loads(sys.stdin.read());print('valid' if r['valid'] else '%d inverted, %d flat' % (r['inverted'], r['degenerate']))" 2>/dev/null)
+    [ -n "$doubles" ] || doubles=error
+    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$name" "$status" "$tets" "$secs" "$per" "$growth" "$bits" "$dv" "$same" "$check" "$doubles"
   else
-    printf '| %s | %s | | | | | | | | %s |\n' "$name" "$status" "$(head -c 120 "$out/$name.err" | tr '\n|' '  ')"
+    printf '| %s | %s | | | | | | | | %s | |\n' "$name" "$status" "$(head -c 120 "$out/$name.err" | tr '\n|' '  ')"
   fi
 }
 s=$data/shrink-and-expand
@@ -61,4 +71,10 @@ done
 for p in "$data"/public/P*; do
   d=$(ls "$p"/domain.* | head -1)
   run_case "$(basename "$p")" "$d" --boundary "$p/boundary.txt"
+done
+v=$data/volmap
+for m in bone foot octa_flower moai gargoyle; do
+  for t in cube tet pyr octa star; do
+    [ -f "$v/$m.mesh" ] && run_case "${m}_$t" "$v/$m.mesh" --boundary "$v/${m}_$t.txt"
+  done
 done

@@ -208,7 +208,7 @@ TEST_CASE("cmx boundary: unreadable input exits 3, a non-ball exits 4, and no fi
 }
 
 TEST_CASE("cmx generate-mesh: every shape and format gives a ball") {
-  for (const std::string shape : {"grid:2,3,4", "ball:2", "slab:5,4", "slab:5,4,2"})
+  for (const std::string shape : {"grid:2,3,4", "ball:2", "slab:5,4", "slab:5,4,2", "fingers:2,2,6"})
     for (const std::string suffix : {".vtk", ".ovm", ".vtu", ".mesh"}) {
       CAPTURE(shape);
       CAPTURE(suffix);
@@ -243,6 +243,10 @@ TEST_CASE("cmx generate-mesh: bad command lines exit 2") {
         {"generate-mesh", "--shape", "bings-house:5", "-o", out},
         {"generate-mesh", "--shape", "bings-house:2", "-o", out},
         {"generate-mesh", "--shape", "knotted-hole:3", "-o", out},
+        {"generate-mesh", "--shape", "fingers:2,1,6", "-o", out},
+        {"generate-mesh", "--shape", "fingers:2,2", "-o", out},
+        {"generate-mesh", "--shape", "fingers:17,2,6", "-o", out},
+        {"generate-mesh", "--shape", "fingers:16,8,400", "-o", out},
         {"generate-mesh", "--shape", "grid:1000,1000,1000", "-o", out},
         {"generate-mesh", "--shape", "ball:2", "-o", fresh_path(".stl")},
         {"generate-mesh", "--shape", "ball:2"},

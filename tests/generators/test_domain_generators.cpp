@@ -3,6 +3,7 @@
 // give the same mesh.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <stdexcept>
 
@@ -197,4 +198,47 @@ TEST_CASE("bings_house and knotted_hole: positive balls whose interior erodes to
   std::size_t integer = 0;
   for (const auto& x : knot.positions) integer += is_integer_point(x) ? 1 : 0;
   CHECK(integer == knot.positions.size());  // amplitude 0: the lattice itself
+}
+
+TEST_CASE("thin_fingers: a palm with bent fingers of W x W cells is a positive ball") {
+  struct Size {
+    std::uint32_t fingers, width, length;
+  };
+  for (const Size s : {Size{1, 2, 1}, Size{2, 2, 9}, Size{3, 3, 12}, Size{4, 2, 20}}) {
+    CAPTURE(s.fingers);
+    CAPTURE(s.width);
+    CAPTURE(s.length);
+    const GeneratedDomain plain = alg::thin_fingers(s.fingers, s.width, s.length, 0, 0.0);
+    check_valid(plain);
+    // The palm's (2F+1)W x 4W x 4W cells and F fingers of W x W x L, six tets each.
+    const std::size_t w = s.width;
+    const std::size_t cells = (2 * s.fingers + 1) * w * 4 * w * 4 * w + s.fingers * w * w * s.length;
+    CHECK(plain.mesh.num_tets() == 6 * cells);
+    // The tips: at height 4W + L, only finger columns (x within [W, 2FW]), each W cells wide,
+    // shifted in y by the bend floor((L-1)^2 / 2L) from the base (both ways with two fingers).
+    const Rational top(std::int64_t(4 * w + s.length));
+    Rational lo_x(1000000), hi_x(-1000000), lo_y(1000000), hi_y(-1000000);
+    std::size_t at_top = 0;
+    for (const auto& p : plain.positions) {
+      if (p[2] != top) continue;
+      ++at_top;
+      lo_x = std::min(lo_x, p[0]), hi_x = std::max(hi_x, p[0]);
+      lo_y = std::min(lo_y, p[1]), hi_y = std::max(hi_y, p[1]);
+    }
+    CHECK(at_top == s.fingers * (w + 1) * (w + 1));
+    CHECK(lo_x == Rational(std::int64_t(w)));
+    CHECK(hi_x == Rational(std::int64_t(2 * s.fingers * w)));
+    const std::int64_t bend = std::int64_t(s.length - 1) * (s.length - 1) / (2 * std::int64_t(s.length));
+    const std::int64_t base = std::int64_t(s.length / 2 + 1 + 3 * w / 2);
+    CHECK(hi_y == Rational(base + bend + std::int64_t(w)));
+    CHECK(lo_y == Rational(s.fingers >= 2 ? base - bend : base + bend));
+    const GeneratedDomain jittered = alg::thin_fingers(s.fingers, s.width, s.length, 5);
+    check_valid(jittered);
+    CHECK(same(jittered, alg::thin_fingers(s.fingers, s.width, s.length, 5)));
+    CHECK(moved_vertices(jittered).interior_total > 0);
+  }
+  CHECK_THROWS_AS((void)alg::thin_fingers(0, 2, 5, 1), std::invalid_argument);
+  CHECK_THROWS_AS((void)alg::thin_fingers(2, 1, 5, 1), std::invalid_argument);
+  CHECK_THROWS_AS((void)alg::thin_fingers(2, 2, 0, 1), std::invalid_argument);
+  CHECK_THROWS_AS((void)alg::thin_fingers(17, 2, 5, 1), std::invalid_argument);
 }
