@@ -10,9 +10,10 @@
 namespace cmx::algorithm {
 
 bool wants_remap_from_doubles(const MapOptions& options, const MapResult& r) {
+  // applied_snap_policy is `nearest` for a non-exact arith: the repair, and so this, only in exact runs.
   return options.remap_doubles && applied_snap_policy(options) == SnapPolicy::repair &&
-         options.placement.arith.exact() && r.outcome == MapOutcome::success && r.doubles.checked &&
-         !r.doubles.check.valid() && !r.doubles.stopped_at_deadline;
+         r.outcome == MapOutcome::success && r.doubles.checked && !r.doubles.check.valid() &&
+         !r.doubles.stopped_at_deadline;
 }
 
 MapProblem problem_from_doubles(const MapResult& r) {
