@@ -3,9 +3,6 @@
 #include <stdexcept>
 
 #include "lp/backend_registry.hpp"
-#ifdef CMX_HAVE_GLPK
-#include "lp/glpk/glpk_backend.hpp"
-#endif
 
 namespace cmx::cli {
 
@@ -34,7 +31,8 @@ CLI::Option* add_lp_option(CLI::App& app, std::string& into, const std::string& 
   const auto parse = [](const std::string& text) {
     if (lp::find_backend(text)) return text;
     throw std::invalid_argument("unknown LP backend '" + text + "'" +
-                                (text == "glpk" ? " (this cmx was built without GLPK: configure with "
+                                (text == "glpk" ? " (this cmx is built without GLPK, which is GPL: the reference program "
+                                                  "cmx-glpk has it, built next to cmx when configured with "
                                                   "-DCMX_WITH_GLPK=ON and libglpk-dev)"
                                                 : " (certified, exact, glpk)"));
   };
@@ -48,12 +46,6 @@ CLI::Option* add_norm_option(CLI::App& app, lp::Norm& into, const std::string& d
     return *norm;
   };
   return add_parsed(app, "--norm", into, parse, description)->type_name("NAME");
-}
-
-void register_reference_backends() {
-#ifdef CMX_HAVE_GLPK
-  lp::register_glpk_backend();
-#endif
 }
 
 }  // namespace cmx::cli

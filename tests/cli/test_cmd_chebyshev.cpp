@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include "run_cmx.hpp"
+#include "skip.hpp"
 
 using cmx::test::run_cmx;
 
@@ -18,18 +19,33 @@ std::string version_key() {
 }  // namespace
 
 TEST_CASE("cmx chebyshev --json: the unit cube, every backend") {
-  for (const char* lp : {"certified", "exact", "glpk"}) {
+  const std::string expected = version_key() +
+      "\"status\": \"interior\", \"radius\": \"1/2\", \"center\": [\"1/2\", \"1/2\", \"1/2\"], "
+      "\"center_double\": [0.5, 0.5, 0.5]}\n";
+  for (const char* lp : {"certified", "exact"}) {
     CAPTURE(lp);
     const auto r = run_cmx({"chebyshev", "--lp", lp, "--json"}, cube);
-    if (std::string(lp) == "glpk" && r.exit_code == 2) {  // cmx built without GLPK: a clear error
-      CHECK(r.err.find("without GLPK") != std::string::npos);
-      continue;
-    }
     CHECK(r.exit_code == 0);
-    CHECK(r.out == version_key() +
-          "\"status\": \"interior\", \"radius\": \"1/2\", \"center\": [\"1/2\", \"1/2\", \"1/2\"], "
-          "\"center_double\": [0.5, 0.5, 0.5]}\n");
+    CHECK(r.out == expected);
   }
+  // The MIT program has no GLPK: a clear refusal that names the program which has it.
+  const auto r = run_cmx({"chebyshev", "--lp", "glpk", "--json"}, cube);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("built without GLPK") != std::string::npos);
+  CHECK(r.err.find("cmx-glpk") != std::string::npos);
+  CHECK(r.out.empty());
+}
+
+TEST_CASE("cmx-glpk chebyshev --json: GLPK's answer on the unit cube") {
+#ifdef CMX_GLPK_EXE
+  const auto r = cmx::test::run_program(CMX_GLPK_EXE, {"chebyshev", "--lp", "glpk", "--json"}, cube);
+  CHECK(r.exit_code == 0);
+  CHECK(r.out == version_key() +
+        "\"status\": \"interior\", \"radius\": \"1/2\", \"center\": [\"1/2\", \"1/2\", \"1/2\"], "
+        "\"center_double\": [0.5, 0.5, 0.5]}\n");
+#else
+  cmx::test::skip("configured without GLPK (CMX_WITH_GLPK=OFF): no cmx-glpk program");
+#endif
 }
 
 TEST_CASE("cmx chebyshev: text output, file input, l1 norm, statuses") {

@@ -1,0 +1,10 @@
+// The reference program `cmx-glpk` (GPL through GLPK; tests and benchmarks, never installed):
+// `--lp glpk` selects GLPK's exact simplex.
+#include "cli/common_options.hpp"
+#include "lp/glpk/glpk_backend.hpp"
+
+namespace cmx::cli {
+
+void register_reference_backends() { lp::register_glpk_backend(); }
+
+}  // namespace cmx::cli
