@@ -2,6 +2,8 @@
 // reported here, through the one printer of cli/messages.hpp.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <new>
 
@@ -9,6 +11,7 @@
 #include "cli/files.hpp"
 #include "cli/messages.hpp"
 #include "cmx_version.hpp"
+#include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
 
 namespace cmx::cli {
@@ -57,6 +60,16 @@ static int run_command(const Command& c, const std::vector<std::string>& args) {
   }
 }
 
+// CMX_SYNC_OUTPUT=1 makes every written file survive a power loss (io/atomic_file.hpp); unset,
+// empty or 0: files are replaced atomically only. False for any other value (a usage error).
+static bool read_sync_setting() {
+  const char* value = std::getenv("CMX_SYNC_OUTPUT");
+  if (!value || !*value || !std::strcmp(value, "0")) return true;
+  if (std::strcmp(value, "1")) return false;
+  io::set_output_durability(io::Durability::synced);
+  return true;
+}
+
 }  // namespace cmx::cli
 
 int main(int argc, char** argv) {
@@ -77,6 +90,11 @@ int main(int argc, char** argv) {
   for (const auto& c : commands())
     if (c.name == name) {
       set_command_name(name);
+      if (!read_sync_setting()) {
+        message("environment variable CMX_SYNC_OUTPUT: '" + std::string(std::getenv("CMX_SYNC_OUTPUT")) +
+                "' is neither 0 nor 1");
+        return exit_usage;
+      }
       return run_command(c, std::vector<std::string>(argv + 2, argv + argc));
     }
   message("unknown command '" + std::string(name) + "' (cmx --help lists the commands)");

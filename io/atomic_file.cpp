@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -14,7 +15,22 @@
 namespace cmx::io {
 namespace {
 
+std::atomic<Durability> durability{Durability::atomic};
+
 std::string errno_text() { return std::strerror(errno); }
+
+void sync_path(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY);
+  if (fd >= 0) {
+    fsync(fd);
+    close(fd);
+  }
+}
+
+std::string directory_of(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  return slash == std::string::npos ? "." : slash == 0 ? "/" : path.substr(0, slash);
+}
 
 mode_t default_file_mode() {
   // mkstemp creates 0600; a normal output file gets 0666 minus the umask, as ofstream would.
@@ -35,7 +51,7 @@ std::string create_temporary(const std::string& path) {
   return name.data();
 }
 
-// Writes the body into the temporary `tmp` of `path` and syncs it to disk.
+// Writes the body into the temporary `tmp` of `path` (and syncs it to disk when asked to).
 void fill_temporary(const std::string& path, const std::string& tmp, const FileBody& body) {
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
@@ -44,11 +60,7 @@ void fill_temporary(const std::string& path, const std::string& tmp, const FileB
     out.flush();
     if (!out) throw IoError(ErrorKind::write_failed, path, 0, "write error (disk full?)");
   }
-  const int sync_fd = open(tmp.c_str(), O_RDONLY);
-  if (sync_fd >= 0) {
-    fsync(sync_fd);
-    close(sync_fd);
-  }
+  if (output_durability() == Durability::synced) sync_path(tmp);
 }
 
 void rename_into_place(const std::string& tmp, const std::string& path) {
@@ -57,6 +69,9 @@ void rename_into_place(const std::string& tmp, const std::string& path) {
 }
 
 }  // namespace
+
+void set_output_durability(Durability d) { durability.store(d); }
+Durability output_durability() { return durability.load(); }
 
 void write_file_atomically(const std::string& path, const FileBody& body) { write_files_atomically({{path, body}}); }
 
@@ -71,6 +86,8 @@ void write_files_atomically(const std::vector<std::pair<std::string, FileBody>>&
       rename_into_place(temporaries[i], files[i].first);
       temporaries[i].clear();  // renamed: nothing left to remove
     }
+    if (output_durability() == Durability::synced)
+      for (const auto& [path, body] : files) sync_path(directory_of(path));  // the renames themselves
   } catch (...) {
     for (const auto& tmp : temporaries)
       if (!tmp.empty()) std::remove(tmp.c_str());

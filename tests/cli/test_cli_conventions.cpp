@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -178,6 +179,28 @@ TEST_CASE("bad option values are exit 2 naming the option, never wrapped or cut"
   check_rejected({"plot", "t.csv"}, "--output");
   check_rejected({"info", "a.vtk", "b.vtk"}, "b.vtk");
   CHECK_FALSE(std::filesystem::exists(out));
+}
+
+TEST_CASE("CMX_SYNC_OUTPUT: 1 writes the same files as unset, a bad value is exit 2 before any work") {
+  const std::string dir = fresh_directory();
+  const std::string plain = dir + "/plain.vtk", synced = dir + "/synced.vtk", refused = dir + "/refused.vtk";
+  const std::vector<std::string> make = {"generate-mesh", "--shape", "grid:2,2,2", "--quiet", "-o"};
+  auto args = make;
+  args.push_back(plain);
+  REQUIRE(run_cmx(args).exit_code == 0);
+  args = {"CMX_SYNC_OUTPUT=1", CMX_EXE};
+  args.insert(args.end(), make.begin(), make.end());
+  args.push_back(synced);
+  REQUIRE(cmx::test::run_program("/usr/bin/env", args).exit_code == 0);
+  CHECK(cmx::test::file_text(synced) == cmx::test::file_text(plain));
+  args = {"CMX_SYNC_OUTPUT=yes", CMX_EXE};
+  args.insert(args.end(), make.begin(), make.end());
+  args.push_back(refused);
+  const auto r = cmx::test::run_program("/usr/bin/env", args);
+  CHECK(r.exit_code == 2);
+  CHECK(every_line_prefixed(r.err, "generate-mesh"));
+  CHECK(r.err.find("CMX_SYNC_OUTPUT: 'yes'") != std::string::npos);
+  CHECK(!std::filesystem::exists(refused));
 }
 
 TEST_CASE("messages start with cmx CMD: and show control bytes and broken UTF-8 escaped") {

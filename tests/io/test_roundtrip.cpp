@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "arith/rounding.hpp"
+#include "io/atomic_file.hpp"
 #include "io/read_mesh.hpp"
 #include "io/tmap.hpp"
 #include "io/write_mesh.hpp"
@@ -109,4 +110,32 @@ TEST_CASE("writers are atomic: a failing write leaves the old file") {
   std::size_t files = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
   CHECK(files == 1);
+}
+
+TEST_CASE("synced writes: the same bytes, in a subdirectory and in the working directory") {
+  const auto dir = temp_dir();
+  REQUIRE(output_durability() == Durability::atomic);  // the default
+  set_output_durability(Durability::synced);
+  const auto restore = [] { set_output_durability(Durability::atomic); };
+  const auto path = (dir / "synced.vtk").string();
+  const auto cwd = std::filesystem::current_path();
+  try {
+    write_tet_mesh(path, two_tets());
+    const std::string synced = slurp(path);
+    std::filesystem::current_path(dir);
+    write_tet_mesh("here.vtk", two_tets());  // no directory in the name: the directory is "."
+    std::filesystem::current_path(cwd);
+    set_output_durability(Durability::atomic);
+    write_tet_mesh((dir / "plain.vtk").string(), two_tets());
+    CHECK(synced == slurp((dir / "plain.vtk").string()));
+    CHECK(slurp((dir / "here.vtk").string()) == synced);
+  } catch (...) {
+    std::filesystem::current_path(cwd);
+    restore();
+    throw;
+  }
+  restore();
+  std::size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
+  CHECK(files == 3);  // no temporaries left
 }
