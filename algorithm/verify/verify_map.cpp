@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <map>
+#include <memory>
 
 #include "algorithm/describe.hpp"
 #include "kernel/orient.hpp"
@@ -212,7 +213,8 @@ Counts orientation_counts(const std::vector<topology::Tet>& tets, const std::vec
 // never needs.
 class BoundaryTiling {
  public:
-  BoundaryTiling(std::vector<std::array<HPoint, 3>> corners, const std::vector<HPoint>& pos)
+  // `corners` point into vectors that outlive the tiling.
+  BoundaryTiling(std::vector<std::array<const HPoint*, 3>> corners, const std::vector<HPoint>& pos)
       : corners_(std::move(corners)), pos_(pos), triangle_(corners_.size()), area_(corners_.size()),
         whole_(corners_.size(), 0), pieces_(corners_.size(), 0) {}
 
@@ -248,13 +250,14 @@ class BoundaryTiling {
 
  private:
   const PlaneTriangle& triangle(std::size_t k) {
-    if (!triangle_[k]) triangle_[k] = make_triangle(corners_[k][0], corners_[k][1], corners_[k][2]);
+    if (!triangle_[k])
+      triangle_[k] = std::make_unique<PlaneTriangle>(make_triangle(*corners_[k][0], *corners_[k][1], *corners_[k][2]));
     return *triangle_[k];
   }
 
-  std::vector<std::array<HPoint, 3>> corners_;
+  std::vector<std::array<const HPoint*, 3>> corners_;
   const std::vector<HPoint>& pos_;
-  std::vector<std::optional<PlaneTriangle>> triangle_;
+  std::vector<std::unique_ptr<PlaneTriangle>> triangle_;  // a pointer each: most are never built
   std::vector<Rational> area_;
   std::vector<std::size_t> whole_, pieces_;
 };
@@ -294,13 +297,13 @@ std::string check_boundary(const VerificationInput& in, const std::vector<topolo
                            const std::vector<HPoint>& prescribed_by_vertex) {
   const std::size_t n_in = in.source->size();
   const auto input_faces = topology::boundary_faces(topology::TetMesh(n_in, *in.tets));
-  std::vector<std::array<HPoint, 3>> in_target_corners, in_source_corners;
+  std::vector<std::array<const HPoint*, 3>> in_target_corners, in_source_corners;
   std::map<topology::VertexId, std::vector<std::size_t>> incident;
   std::map<topology::Triangle, std::size_t> by_corners;
   for (std::size_t k = 0; k < input_faces.size(); ++k) {
     const auto& f = input_faces[k].face;
-    in_target_corners.push_back({prescribed_by_vertex[f[0]], prescribed_by_vertex[f[1]], prescribed_by_vertex[f[2]]});
-    in_source_corners.push_back({(*in.source)[f[0]], (*in.source)[f[1]], (*in.source)[f[2]]});
+    in_target_corners.push_back({&prescribed_by_vertex[f[0]], &prescribed_by_vertex[f[1]], &prescribed_by_vertex[f[2]]});
+    in_source_corners.push_back({&(*in.source)[f[0]], &(*in.source)[f[1]], &(*in.source)[f[2]]});
     for (auto v : f) incident[v].push_back(k);
     by_corners.emplace(canonical(f), k);
   }
