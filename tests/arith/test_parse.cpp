@@ -43,6 +43,32 @@ TEST_CASE("integers, decimals, fractions and hexfloats parse exactly") {
   CHECK(parsed("0.1000000000000000055511151231257827021181583404541015625") == Rational(0.1));
 }
 
+// The value of a decimal by GMP's own reader: the digits as an integer over a power of ten.
+static Rational by_gmp(const char* digits, int exponent) {
+  Rational q{cmx::Integer(digits)};
+  cmx::Integer power;
+  mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(exponent < 0 ? -exponent : exponent));
+  q = exponent < 0 ? Rational(q / power) : Rational(q * power);
+  q.canonicalize();
+  return q;
+}
+
+TEST_CASE("decimals on both sides of the 19-digit, 10^19 short cut parse to the same values") {
+  CHECK(parsed("9999999999999999999") == by_gmp("9999999999999999999", 0));     // 19 digits
+  CHECK(parsed("99999999999999999999") == by_gmp("99999999999999999999", 0));   // 20 digits
+  CHECK(parsed("0.9999999999999999999") == by_gmp("9999999999999999999", -19));
+  CHECK(parsed("0.99999999999999999999") == by_gmp("99999999999999999999", -20));
+  CHECK(parsed("1e19") == by_gmp("1", 19));
+  CHECK(parsed("9999999999999999999e19") == by_gmp("9999999999999999999", 19));  // product past 2^64
+  CHECK(parsed("1e20") == by_gmp("1", 20));
+  CHECK(parsed("1e-19") == by_gmp("1", -19));
+  CHECK(parsed("1e-20") == by_gmp("1", -20));
+  CHECK(parsed("-0.333333") == -by_gmp("333333", -6));
+  CHECK(parsed("0.000") == 0);
+  CHECK(parsed("12.5e-1") == Rational(5, 4));
+  CHECK(parsed("0.666667") == Rational(666667, 1000000));
+}
+
 TEST_CASE("canonical printing round-trips") {
   for (const char* text : {"0", "1", "-1", "1/3", "-22/7", "123456789012345678901234567891/1024"}) {
     Rational q = parsed(text);
