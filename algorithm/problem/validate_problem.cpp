@@ -55,15 +55,20 @@ bool has_interior(const std::vector<InnerHalfSpace>& hs, const lp::ChebyshevOpti
 // with the origin moved to the boundary's centroid, where the float simplex starts), taken as an
 // exact point and checked against every half-space exactly. Most valid boundaries pass; false
 // leaves the verdict, and every message about a failure, to the exact LP.
+// A double next to each coordinate (the low end of its cached enclosure: no GMP, and near enough
+// for a guess that is then checked exactly).
+std::array<double, 3> near(const HPoint& p) { return {p.enclosure(0).lo, p.enclosure(1).lo, p.enclosure(2).lo}; }
+
 bool seen_from_float_centre(const ValidatedProblem& v) {
   std::array<double, 3> o{0, 0, 0};
   for (const HPoint& p : v.boundary_positions)
-    for (int k = 0; k < 3; ++k) o[std::size_t(k)] += p.approx()[std::size_t(k)];
+    for (std::size_t k = 0; k < 3; ++k) o[k] += near(p)[k];
   for (double& x : o) x /= double(v.boundary_positions.size());
   std::vector<std::array<double, 4>> rows;
   rows.reserve(v.boundary_faces.size());
   for (const auto& f : v.boundary_faces) {
-    std::array<double, 4> r = float_inner_row(v.prescribed[f.face[0]], v.prescribed[f.face[1]], v.prescribed[f.face[2]]);
+    const auto& c = f.face;
+    std::array<double, 4> r = float_inner_row(near(v.prescribed[c[0]]), near(v.prescribed[c[1]]), near(v.prescribed[c[2]]));
     r[3] -= r[0] * o[0] + r[1] * o[1] + r[2] * o[2];
     rows.push_back(r);
   }
