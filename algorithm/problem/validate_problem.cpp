@@ -50,15 +50,15 @@ bool has_interior(const std::vector<InnerHalfSpace>& hs, const lp::ChebyshevOpti
   return lp::chebyshev_center(as_lp(hs, hs.size()), lp).status == lp::ChebyshevStatus::interior;
 }
 
+// A double next to each coordinate (the low end of its cached enclosure: no GMP, and near enough
+// for a guess that is then checked exactly).
+std::array<double, 3> near(const HPoint& p) { return {p.enclosure(0).lo, p.enclosure(1).lo, p.enclosure(2).lo}; }
+
 // A point that sees every boundary triangle strictly from inside proves that the kernel has
 // interior without the exact LP: the float Chebyshev centre of the triangles' planes (in doubles,
 // with the origin moved to the boundary's centroid, where the float simplex starts), taken as an
 // exact point and checked against every half-space exactly. Most valid boundaries pass; false
 // leaves the verdict, and every message about a failure, to the exact LP.
-// A double next to each coordinate (the low end of its cached enclosure: no GMP, and near enough
-// for a guess that is then checked exactly).
-std::array<double, 3> near(const HPoint& p) { return {p.enclosure(0).lo, p.enclosure(1).lo, p.enclosure(2).lo}; }
-
 bool seen_from_float_centre(const ValidatedProblem& v) {
   std::array<double, 3> o{0, 0, 0};
   for (const HPoint& p : v.boundary_positions)
