@@ -28,7 +28,7 @@ namespace cmx::cli {
 namespace {
 
 const HelpText help = {
-    "usage: cmx boundary MESH --shape SHAPE -o B.txt [--seed N]\n",
+    "usage: cmx boundary MESH --shape SHAPE -o B.txt [--seed N] [--spread N]\n",
     "Generates prescribed positions for the boundary vertices of MESH (a ball), star-shaped about\n"
     "the origin, and writes 'index x y z' per boundary vertex (exact decimal doubles).\n",
     "Exit status: 0 written; 2 bad command line (also: B.txt is MESH); 3 unreadable MESH; 4 MESH is\n"
@@ -39,6 +39,7 @@ struct BoundaryArgs {
   std::string mesh, output, shape_text;
   generators::BoundaryShapeSpec shape;
   std::optional<std::uint64_t> seed;
+  int spread = 0;
 };
 
 void add_options(CLI::App& app, BoundaryArgs& a) {
@@ -62,11 +63,18 @@ void add_options(CLI::App& app, BoundaryArgs& a) {
   add_parsed(app, "--seed", a.seed, [](const std::string& t) { return std::optional(parse_seed(t)); },
              "seed of the random corner choice (and of star's radii); default 1234;\n0 to 2^64-1")
       ->type_name("N");
+  app.add_option("--spread", a.spread,
+                 "spreading steps after the Tutte embedding (default 0): each reweights it\n"
+                 "against crowding (stretch minimisation), so that long thin parts\n"
+                 "(fingers, tunnels) get a fair share of the shape; 0 to 100")
+      ->type_name("N")
+      ->check(CLI::Range(0, 100));
 }
 
 // The shape with --seed applied; two different seeds are a contradiction.
 generators::BoundaryShapeSpec shape_with_seed(const BoundaryArgs& a) {
   generators::BoundaryShapeSpec spec = a.shape;
+  spec.spread = a.spread;
   if (!a.seed) return spec;
   if (a.shape_text.find(':') != std::string::npos && *a.seed != spec.seed)
     usage_error("two different seeds given: " + a.shape_text + " and --seed " + std::to_string(*a.seed));

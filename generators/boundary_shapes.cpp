@@ -164,19 +164,31 @@ std::vector<std::uint32_t> shortest_path(const Surface& s, const std::vector<Vec
 
 // ---- Tutte embedding of the free vertices ----------------------------------------------------
 
-// Solves the uniform-weight Laplacian system of one connected group of free vertices,
-//   deg(v) x_v - sum_{free u ~ v} x_u = sum_{fixed u ~ v} p_u,
+// Edge weights of the Tutte system, aligned with Surface::neighbors (weight[v][k] belongs to the
+// edge from v to neighbors[v][k]; symmetric: the same value is stored at both ends).
+using EdgeWeights = std::vector<std::vector<double>>;
+
+EdgeWeights uniform_weights(const Surface& s) {
+  EdgeWeights w(s.neighbors.size());
+  for (std::size_t v = 0; v < w.size(); ++v) w[v].assign(s.neighbors[v].size(), 1.0);
+  return w;
+}
+
+// Solves the weighted Laplacian system of one connected group of free vertices,
+//   (sum_u w_vu) x_v - sum_{free u ~ v} w_vu x_u = sum_{fixed u ~ v} w_vu p_u,
 // for the three coordinates, by conjugate gradients with the Jacobi preconditioner. The matrix is
-// symmetric positive definite because the group touches a fixed vertex.
-void solve_tutte_group(const Surface& s, const std::vector<std::uint32_t>& group, const std::vector<std::uint32_t>& slot,
-                       const std::vector<char>& fixed, std::vector<Vec3>& pos) {
+// symmetric positive definite because the weights are symmetric and positive and the group
+// touches a fixed vertex.
+void solve_tutte_group(const Surface& s, const EdgeWeights& weight, bool uniform, const std::vector<std::uint32_t>& group,
+                       const std::vector<std::uint32_t>& slot, const std::vector<char>& fixed, std::vector<Vec3>& pos) {
   const std::size_t n = group.size();
   std::vector<double> diag(n), b(n), x(n), r(n), z(n), p(n), ap(n);
   const auto apply = [&](const std::vector<double>& in, std::vector<double>& out) {
     for (std::size_t i = 0; i < n; ++i) {
       double sum = diag[i] * in[i];
-      for (auto u : s.neighbors[group[i]])
-        if (!fixed[u]) sum -= in[slot[u]];
+      const auto& adj = s.neighbors[group[i]];
+      for (std::size_t k = 0; k < adj.size(); ++k)
+        if (!fixed[adj[k]]) sum -= weight[group[i]][k] * in[slot[adj[k]]];
       out[i] = sum;
     }
   };
@@ -185,22 +197,38 @@ void solve_tutte_group(const Surface& s, const std::vector<std::uint32_t>& group
     for (std::size_t i = 0; i < n; ++i) sum += a[i] * c[i];
     return sum;
   };
-  for (std::size_t i = 0; i < n; ++i) diag[i] = double(s.neighbors[group[i]].size());
+  for (std::size_t i = 0; i < n; ++i) {
+    diag[i] = 0;
+    for (double w : weight[group[i]]) diag[i] += w;
+  }
   const std::size_t max_iterations = 10 * n + 100;
   for (int axis = 0; axis < 3; ++axis) {
     for (std::size_t i = 0; i < n; ++i) {
       double sum = 0;
-      for (auto u : s.neighbors[group[i]])
-        if (fixed[u]) sum += pos[u][std::size_t(axis)];
+      const auto& adj = s.neighbors[group[i]];
+      for (std::size_t k = 0; k < adj.size(); ++k)
+        if (fixed[adj[k]]) sum += weight[group[i]][k] * pos[adj[k]][std::size_t(axis)];
       b[i] = sum;
       x[i] = sum / diag[i];  // start: the fixed neighbours' contribution alone
     }
     apply(x, ap);
     for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - ap[i];
-    const double tolerance = 1e-15 * std::max(std::sqrt(inner(b, b)), 1e-300);
+    // Uniform weights: converged at a residual 1e-15 of the right-hand side's. Spread weights
+    // span many orders of magnitude, so that criterion would ignore the rows of small weight:
+    // converged when every vertex is within 1e-16 (of the fixed positions' scale) of its
+    // neighbours' weighted mean, the residual scaled row by row.
+    double scale = 0;
+    for (std::size_t i = 0; i < n; ++i) scale = std::max(scale, std::abs(b[i] / diag[i]));
+    const double tolerance = uniform ? 1e-15 * std::max(std::sqrt(inner(b, b)), 1e-300) : 1e-16 * std::max(scale, 1e-300);
+    const auto scaled_residual = [&] {
+      if (uniform) return std::sqrt(inner(r, r));
+      double worst = 0;
+      for (std::size_t i = 0; i < n; ++i) worst = std::max(worst, std::abs(r[i] / diag[i]));
+      return worst;
+    };
     for (std::size_t i = 0; i < n; ++i) p[i] = z[i] = r[i] / diag[i];
     double rz = inner(r, z);
-    for (std::size_t it = 0; it < max_iterations && std::sqrt(inner(r, r)) > tolerance; ++it) {
+    for (std::size_t it = 0; it < max_iterations && scaled_residual() > tolerance; ++it) {
       apply(p, ap);
       const double pap = inner(p, ap);
       if (!(pap > 0)) break;
@@ -219,9 +247,10 @@ void solve_tutte_group(const Surface& s, const std::vector<std::uint32_t>& group
   }
 }
 
-// Places every free vertex by a Tutte embedding; false when a group of free vertices touches no
-// fixed vertex (cannot happen on a connected surface with a fixed vertex).
-bool place_free_vertices(const Surface& s, const std::vector<char>& fixed, std::vector<Vec3>& pos) {
+// Places every free vertex by a Tutte embedding with the given weights; false when a group of
+// free vertices touches no fixed vertex (cannot happen on a connected surface with a fixed vertex).
+bool place_free_vertices(const Surface& s, const EdgeWeights& weight, bool uniform, const std::vector<char>& fixed,
+                         std::vector<Vec3>& pos) {
   const std::size_t n = s.vertices.size();
   std::vector<std::uint32_t> slot(n, invalid_index);
   std::vector<std::uint32_t> group;
@@ -240,9 +269,74 @@ bool place_free_vertices(const Surface& s, const std::vector<char>& fixed, std::
         }
       }
     if (!touches_fixed) return false;
-    solve_tutte_group(s, group, slot, fixed, pos);
+    solve_tutte_group(s, weight, uniform, group, slot, fixed, pos);
   }
   return true;
+}
+
+// ---- spreading: weights that undo the Tutte map's crowding ------------------------------------
+
+// Squared L2 stretch (Sander et al. 2001) of the linear map from the embedded triangle `to` back to
+// the source triangle `from`: half the squared Frobenius norm of its Jacobian. Large where the
+// embedding crowds the source; infinite for a flat embedded triangle.
+double squared_stretch(const std::array<Vec3, 3>& from, const std::array<Vec3, 3>& to, double outward) {
+  const Vec3 e1 = sub(to[1], to[0]), e2 = sub(to[2], to[0]);
+  const Vec3 n = cross(e1, e2);
+  const double twice_area = norm(n);
+  const double len1 = norm(e1);
+  // Flat or turned over (its normal against the surface's orientation, about the origin): crowded
+  // beyond what doubles resolve.
+  if (!(twice_area > 0) || !(len1 > 0) || !(outward * dot(n, to[0]) > 0)) return std::numeric_limits<double>::infinity();
+  // Orthonormal frame of the embedded triangle's plane: u along e1, w = n x u / |n|.
+  const Vec3 u = scaled(e1, 1.0 / len1), w = scaled(cross(n, u), 1.0 / twice_area);
+  // P = [[p1x, p2x], [p1y, p2y]] (the edge vectors in the frame), J = Q P^-1 with Q the source edges.
+  const double p1x = len1, p1y = 0, p2x = dot(e2, u), p2y = dot(e2, w);
+  const double det = p1x * p2y - p2x * p1y;
+  const Vec3 q1 = sub(from[1], from[0]), q2 = sub(from[2], from[0]);
+  // Columns of J: Q times the columns of P^-1 = (1/det) [[p2y, -p2x], [-p1y, p1x]].
+  const Vec3 c1 = scaled(sub(scaled(q1, p2y), scaled(q2, p1y)), 1.0 / det);
+  const Vec3 c2 = scaled(sub(scaled(q2, p1x), scaled(q1, p2x)), 1.0 / det);
+  return 0.5 * (dot(c1, c1) + dot(c2, c2));
+}
+
+// One step of Yoshizawa, Belyaev and Seidel's stretch minimisation (2004): each vertex's stretch
+// sigma_v is the source-area-weighted mean of its faces' squared stretches (square root), and every
+// edge weight is divided by sigma_a sigma_b, i.e. by sigma of the other end in each vertex's
+// averaging equation (the symmetric form of their update, so that the system stays symmetric):
+// a crowded region pulls its neighbours less and so spreads. Each
+// step's factors are clamped to within 10^3 of the median so that one step cannot make the system
+// singular in doubles. Returns the worst vertex stretch over the median (before clamping), or 0
+// when no face has a finite stretch (the weights are then unchanged).
+double spread_weights(const Surface& s, const std::vector<Vec3>& src, const std::vector<Vec3>& pos, EdgeWeights& weight) {
+  const std::size_t n = s.vertices.size();
+  double volume = 0;
+  for (const auto& f : s.faces) volume += dot(pos[f[0]], cross(pos[f[1]], pos[f[2]]));
+  const double outward = volume < 0 ? -1.0 : 1.0;
+  std::vector<double> sum(n, 0.0), area(n, 0.0);
+  for (const auto& f : s.faces) {
+    const std::array<Vec3, 3> from{src[f[0].idx()], src[f[1].idx()], src[f[2].idx()]};
+    const std::array<Vec3, 3> to{pos[f[0].idx()], pos[f[1].idx()], pos[f[2].idx()]};
+    const double a = 0.5 * norm(cross(sub(from[1], from[0]), sub(from[2], from[0])));
+    const double st = std::min(squared_stretch(from, to, outward), std::numeric_limits<double>::max());
+    for (auto v : f) {
+      sum[v.idx()] += a * st;
+      area[v.idx()] += a;
+    }
+  }
+  std::vector<double> sigma(n, 0.0);
+  for (std::size_t v = 0; v < n; ++v) sigma[v] = area[v] > 0 ? std::sqrt(sum[v] / area[v]) : 0.0;
+  std::vector<double> sorted;
+  for (double x : sigma)
+    if (std::isfinite(x) && x > 0) sorted.push_back(x);
+  if (sorted.empty()) return 0;
+  std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(sorted.size() / 2), sorted.end());
+  const double median = sorted[sorted.size() / 2];
+  const double worst = *std::max_element(sorted.begin(), sorted.end()) / median;
+  for (auto& x : sigma) x = std::clamp(std::isfinite(x) ? x : median * 1e3, median * 1e-3, median * 1e3) / median;
+  for (std::size_t v = 0; v < n; ++v)
+    for (std::size_t k = 0; k < s.neighbors[v].size(); ++k)
+      weight[v][k] /= sigma[v] * sigma[s.neighbors[v][k]];
+  return worst;
 }
 
 // ---- one attempt -----------------------------------------------------------------------------
@@ -273,12 +367,13 @@ std::array<std::uint32_t, 4> choose_corners(const Surface& s, BoundaryShape shap
   return c;
 }
 
-// Maps the surface onto the tetrahedron with the given corners; "" or why it failed.
-std::string embed_on_tet(const Surface& s, const std::vector<Vec3>& src, const std::array<std::uint32_t, 4>& corners,
-                         std::vector<Vec3>& pos) {
+// Steps 1 and 2 of the construction: the corners go to the tetrahedron's corners, the paths
+// between them to its edges; marks them fixed. "" or why it failed.
+std::string fix_corner_paths(const Surface& s, const std::vector<Vec3>& src, const std::array<std::uint32_t, 4>& corners,
+                             std::vector<char>& fixed, std::vector<Vec3>& pos) {
   const auto& tet = tet_corners();
   const std::size_t n = s.vertices.size();
-  std::vector<char> fixed(n, 0);
+  fixed.assign(n, 0);
   pos.assign(n, Vec3{0, 0, 0});
   for (std::size_t j = 0; j < 4; ++j) {
     fixed[corners[j]] = 1;
@@ -296,14 +391,16 @@ std::string embed_on_tet(const Surface& s, const std::vector<Vec3>& src, const s
         for (std::size_t a = 0; a < 3; ++a) pos[path[k]][a] = (1 - t) * tet[j][a] + t * tet[i][a];
       }
     }
-  if (!place_free_vertices(s, fixed, pos)) return "a group of free boundary vertices touches no path";
-  // Inside-out (the corners' cyclic order is the mirror image)? Reflect y -> -y: exact, and it
-  // maps the tetrahedron onto itself.
+  return "";
+}
+
+// Inside-out (the corners' cyclic order is the mirror image)? Reflect y -> -y: exact, and it
+// maps the tetrahedron onto itself.
+void orient_outward(const Surface& s, std::vector<Vec3>& pos) {
   double volume = 0;
   for (const auto& f : s.faces) volume += dot(pos[f[0]], cross(pos[f[1]], pos[f[2]]));
   if (volume < 0)
     for (auto& p : pos) p[1] = -p[1];
-  return "";
 }
 
 void apply_shape(const BoundaryShapeSpec& spec, std::vector<Vec3>& pos) {
@@ -315,6 +412,40 @@ void apply_shape(const BoundaryShapeSpec& spec, std::vector<Vec3>& pos) {
     const double factor = 1.0 + 9.0 * double(draw_below(rng, std::uint64_t{1} << 20)) * 0x1p-20;
     p = scaled(p, factor);
   }
+}
+
+// Steps 3 to 6 for fixed corners and paths: the Tutte embedding, then up to spec.spread
+// reweighted ones, each oriented, shaped and checked; g.positions gets the last valid one. The
+// steps stop early once the worst vertex stretch is within spread_enough of the median (spread
+// enough), or at the first invalid step after a valid one (the weights have begun to span more
+// than the solver resolves). "" or why the plain embedding failed (when no step was valid).
+std::string place_and_check(const topology::TetMesh& mesh, const Surface& s, const std::vector<Vec3>& src,
+                            const std::vector<char>& fixed, const BoundaryShapeSpec& spec, std::vector<Vec3>& pos,
+                            GeneratedBoundary& g) {
+  constexpr double spread_enough = 20;
+  EdgeWeights weight = uniform_weights(s);
+  std::vector<Vec3> best;
+  std::string first_failure;
+  for (int step = 0; step <= spec.spread; ++step) {
+    if (step > 0) {
+      const double worst = spread_weights(s, src, pos, weight);
+      if (worst == 0 || (!best.empty() && worst < spread_enough)) break;
+    }
+    if (!place_free_vertices(s, weight, step == 0, fixed, pos)) return "a group of free boundary vertices touches no path";
+    g.positions = pos;
+    orient_outward(s, g.positions);
+    apply_shape(spec, g.positions);
+    std::string why = check_star_shaped_about_origin(mesh, g);
+    if (why.empty())
+      best = g.positions;
+    else if (!best.empty())
+      break;
+    else if (step == 0)
+      first_failure = std::move(why);
+  }
+  if (best.empty()) return first_failure;
+  g.positions = std::move(best);
+  return "";
 }
 
 GeneratedBoundary failure(std::string message, int attempts = 0) {
@@ -373,11 +504,10 @@ GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::ve
   for (int attempt = 0; attempt < max_boundary_attempts; ++attempt) {
     std::mt19937_64 rng(mix(spec.seed + 0x9E3779B97F4A7C15ull * std::uint64_t(attempt + 1)));
     const auto corners = choose_corners(s, spec.shape, rng);
-    std::string why = embed_on_tet(s, src, corners, g.positions);
-    if (why.empty()) {
-      apply_shape(spec, g.positions);
-      why = check_star_shaped_about_origin(mesh, g);
-    }
+    std::vector<char> fixed;
+    std::vector<Vec3> pos;
+    std::string why = fix_corner_paths(s, src, corners, fixed, pos);
+    if (why.empty()) why = place_and_check(mesh, s, src, fixed, spec, pos, g);
     g.attempts = attempt + 1;
     if (why.empty()) {
       g.ok = true;

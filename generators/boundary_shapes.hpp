@@ -27,6 +27,10 @@
 //     [1, 10), drawn from a generator seeded with the spec's seed (independent of the attempt).
 //  6. check_star_shaped_about_origin (exact predicates on the doubles); a failure starts the next
 //     attempt with new corners.
+//  With BoundaryShapeSpec::spread > 0, steps 3 to 6 are repeated up to `spread` times with the
+//  Tutte weights divided by the stretch of the previous embedding (below), and the last valid
+//  result is kept; the repetition stops once the worst vertex's stretch is within 20 times the
+//  median, or at the first invalid result after a valid one.
 // Path spacing is uniform (the predecessor used k/(m+2), leaving a double gap at the end). The
 // source geometry enters only through Dijkstra's edge lengths, so it is not translated (lengths
 // do not depend on where the boundary centroid is). The result depends only on the mesh, the
@@ -47,6 +51,12 @@ enum class BoundaryShape { tet, stiff_tet, sphere, star };
 struct BoundaryShapeSpec {
   BoundaryShape shape = BoundaryShape::tet;
   std::uint64_t seed = 1234;
+  // Spreading steps after the Tutte embedding (0: none, the construction above unchanged). Each
+  // step reweights the Tutte system to undo its crowding (Yoshizawa, Belyaev and Seidel's stretch
+  // minimisation) and solves it again; the last step that validates is kept. Uniform weights crowd
+  // a long protrusion (a finger, a tunnel) exponentially along its length, to below what doubles
+  // resolve; a few steps spread it over a fair share of the shape.
+  int spread = 0;
 };
 
 // Reads "tet", "stiff-tet", "sphere" or "star", each optionally followed by ":SEED" (a decimal

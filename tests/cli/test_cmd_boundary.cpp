@@ -168,6 +168,9 @@ TEST_CASE("cmx boundary: bad command lines exit 2 and write nothing") {
         {"boundary", "--shape", "tet", "-o", out},
         {"boundary", mesh, "--shape", "tet", "-o", out, "--seed", "-3"},
         {"boundary", mesh, "--shape", "star:4", "-o", out, "--seed", "5"},
+        {"boundary", mesh, "--shape", "tet", "-o", out, "--spread", "101"},
+        {"boundary", mesh, "--shape", "tet", "-o", out, "--spread", "-1"},
+        {"boundary", mesh, "--shape", "tet", "-o", out, "--spread", "x"},
         {"boundary", mesh, "--shape", "tet", "-o", out, "--frobnicate"},
         {"boundary", mesh, mesh, "--shape", "tet", "-o", out},
         {"boundary", mesh, "--shape"}}) {
@@ -258,4 +261,19 @@ TEST_CASE("cmx generate-mesh: bad command lines exit 2") {
     CHECK(run_cmx(args).exit_code == 2);
     CHECK_FALSE(fs::exists(out));
   }
+}
+
+TEST_CASE("cmx boundary --spread: another valid boundary, the same bytes again") {
+  const auto mesh = generated_mesh("fingers:1,2,40");
+  const auto plain = fresh_path(".txt"), spread = fresh_path(".txt"), again = fresh_path(".txt");
+  REQUIRE(run_cmx({"boundary", mesh, "--shape", "sphere", "-o", plain}).exit_code == 0);
+  REQUIRE(run_cmx({"boundary", mesh, "--shape", "sphere", "--spread", "30", "-o", spread}).exit_code == 0);
+  REQUIRE(run_cmx({"boundary", mesh, "--shape", "sphere", "--spread=30", "-o", again}).exit_code == 0);
+  CHECK(file_text(plain) != file_text(spread));
+  CHECK(file_text(spread) == file_text(again));
+  // The spread file is a valid boundary for the mesh: cmx map accepts it (validation alone would
+  // refuse a boundary that is not star-shaped or has a flat triangle; the map itself is checked
+  // elsewhere).
+  const auto info = run_cmx({"map", mesh, "--boundary", spread, "-o", fresh_path(""), "--quiet"});
+  CHECK(info.exit_code == 0);
 }

@@ -4,6 +4,7 @@
 // boundary vertices, has the shape's geometry, and is the same bit for bit when generated again.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -308,4 +309,43 @@ TEST_CASE("check_star_shaped_about_origin: a surface wrapping twice around a ray
     b.positions[std::size_t(2 + k)] = {std::cos(angle), std::sin(angle), 0};
   }
   CHECK(alg::check_star_shaped_about_origin(mesh, b) == "");
+}
+
+namespace {
+
+// Smallest and median area of the boundary triangles at the generated positions (doubles).
+std::pair<double, double> smallest_and_median_area(const TetMesh& mesh, const alg::GeneratedBoundary& g) {
+  std::vector<std::size_t> slot(mesh.num_vertices(), 0);
+  for (std::size_t i = 0; i < g.vertices.size(); ++i) slot[g.vertices[i]] = i;
+  std::vector<double> areas;
+  for (const auto& f : cmx::topology::boundary_faces(mesh)) {
+    const auto& a = g.positions[slot[f.face[0]]];
+    const auto& b = g.positions[slot[f.face[1]]];
+    const auto& c = g.positions[slot[f.face[2]]];
+    const std::array<double, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    areas.push_back(0.5 * norm({u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]}));
+  }
+  std::sort(areas.begin(), areas.end());
+  return {areas.front(), areas[areas.size() / 2]};
+}
+
+}  // namespace
+
+TEST_CASE("spreading undoes the Tutte embedding's crowding of a long finger") {
+  // One finger of 2 x 2 cells and length 40 on a palm: uniform weights crowd its tip into
+  // triangles of area about 1e-19 (against a median of 4e-3); spreading must leave no triangle
+  // below 1e-12 of the median, and stay valid, exact and deterministic like every shape.
+  const auto hand = alg::thin_fingers(1, 2, 40, 0, 0.0);
+  const Positions source = hand.double_positions();
+  for (auto shape : {BoundaryShape::tet, BoundaryShape::sphere}) {
+    const auto plain = check_shape(hand.mesh, source, BoundaryShapeSpec{shape, 1234, 0});
+    const auto spread = check_shape(hand.mesh, source, BoundaryShapeSpec{shape, 1234, 30});
+    const auto [plain_min, plain_median] = smallest_and_median_area(hand.mesh, plain);
+    const auto [spread_min, spread_median] = smallest_and_median_area(hand.mesh, spread);
+    CAPTURE(plain_min / plain_median);
+    CAPTURE(spread_min / spread_median);
+    CHECK(plain_min < 1e-12 * plain_median);  // the crowding the spreading is for
+    CHECK(spread_min > 1e-12 * spread_median);
+    CHECK(spread_min > 1e6 * plain_min);
+  }
 }
