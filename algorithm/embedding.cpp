@@ -9,7 +9,15 @@
 
 namespace cmx::algorithm {
 
-VertexId Embedding::append_vertex(const HPoint& src, const HPoint& at, bool in_cluster) {
+VertexId Embedding::append_vertex(const HPoint& src, const HPoint& at, bool in_cluster,
+                                  const std::array<std::uint32_t, 3>& from) {
+  if (source_free) {
+    origin.push_back(static_cast<std::uint32_t>(parents.size()));
+    std::array<std::uint32_t, 3> by_creation = from;
+    for (auto& p : by_creation)
+      if (p != topology::invalid_index) p = origin[p];
+    parents.push_back(by_creation);
+  }
   source.push_back(arith.round(src));
   target.push_back(arith.round(at));
   unexpanded.push_back(in_cluster ? 1 : 0);
@@ -20,7 +28,7 @@ VertexId Embedding::append_vertex(const HPoint& src, const HPoint& at, bool in_c
 
 // A non-exact arith rounds the source midpoint (or barycentre) of a split: its tets may flatten.
 void Embedding::check_rounded_split(VertexId v, const HPoint& exact_source) const {
-  if (arith.exact() || source[v] == exact_source) return;
+  if (source_free || arith.exact() || source[v] == exact_source) return;
   if (const std::optional<InvalidTet> bad = first_invalid_tet_around(*this, v, true))
     throw PrecisionLost(precision_loss_at(
         *this, v, *bad, "split",
@@ -31,7 +39,7 @@ VertexId Embedding::split_edge(VertexId a, VertexId b, const HPoint& at, bool in
   const HPoint src = midpoint(source[a], source[b]);
   const topology::SplitResult r = topology::split_edge(mesh, a, b);
   if (!r.ok) throw MapError(MapErrorKind::internal, "edge split refused: " + r.message);
-  const VertexId v = append_vertex(src, at, in_cluster);
+  const VertexId v = append_vertex(src, at, in_cluster, {a.idx(), b.idx(), topology::invalid_index});
   if (v != r.new_vertex) throw MapError(MapErrorKind::internal, "edge split: vertex numbering out of step");
   check_rounded_split(v, src);
   return v;
@@ -44,7 +52,7 @@ VertexId Embedding::split_face(VertexId a, VertexId b, VertexId c, const HPoint&
   const HPoint src = convex_combination(pts, w, 3);
   const topology::SplitResult r = topology::split_face(mesh, a, b, c);
   if (!r.ok) throw MapError(MapErrorKind::internal, "face split refused: " + r.message);
-  const VertexId v = append_vertex(src, at, in_cluster);
+  const VertexId v = append_vertex(src, at, in_cluster, {a.idx(), b.idx(), c.idx()});
   if (v != r.new_vertex) throw MapError(MapErrorKind::internal, "face split: vertex numbering out of step");
   check_rounded_split(v, src);
   return v;
@@ -81,6 +89,7 @@ void Embedding::compact_vertices(std::size_t input_vertices) {
       if (new_id[v] != topology::invalid_index && new_id[v] != v) vec[new_id[v]] = std::move(vec[v]);
     vec.resize(next);
   };
+  if (source_free) keep(origin);
   keep(source);
   keep(target);
   keep(unexpanded);
@@ -93,6 +102,7 @@ Sign Embedding::orient_target(const topology::Tet& t) const {
 }
 
 Sign Embedding::orient_source(const topology::Tet& t) const {
+  if (source_free) return Sign::positive;
   return orient3d(source[t[0]], source[t[1]], source[t[2]], source[t[3]], {filter, stats});
 }
 

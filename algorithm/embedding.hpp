@@ -31,6 +31,16 @@ struct Embedding {
   FilterPolicy filter;           // arithmetic of every predicate
   FilterStats* stats = nullptr;  // optional tier counters
   CoordinateArith arith;         // number system of every coordinate (--arith; default exact)
+  // A ball given by its tets alone (MapOptions::combinatorial): the source positions carry no
+  // geometry, every tet counts as positive in the source, and every vertex ever made records the
+  // two or three vertices whose edge or face its split divided (invalid_index three times for an
+  // input vertex), from which the verifier recomputes its barycentric coordinates in the input
+  // complex. `parents` is indexed by creation number and never compacted (a vertex dropped at the
+  // end, a push undone, may be a parent of one that stays); `origin` gives each vertex's creation
+  // number and is compacted with the vertices. Both empty unless source_free.
+  bool source_free = false;
+  std::vector<std::array<std::uint32_t, 3>> parents;
+  std::vector<std::uint32_t> origin;
   // Per-vertex data of the map's users (the expansion loop's queue state), grown with every new
   // vertex (vertex_properties.hpp); a copy of the Embedding starts without them.
   VertexProperties properties;
@@ -65,7 +75,7 @@ struct Embedding {
   int unexpanded_count(const topology::Tet& t) const;
 
  private:
-  VertexId append_vertex(const HPoint& src, const HPoint& at, bool in_cluster);
+  VertexId append_vertex(const HPoint& src, const HPoint& at, bool in_cluster, const std::array<std::uint32_t, 3>& from);
   void check_rounded_split(VertexId v, const HPoint& exact_source) const;
 };
 

@@ -78,6 +78,8 @@ void fill_output(const Embedding& e, MapResult& r) {
   for (TetId t : e.mesh.live_tets()) r.tets.push_back(e.mesh.tet(t));
   r.source = e.source;
   r.target = e.target;
+  r.parents = e.parents;
+  r.origin = e.origin;
   output_statistics(e.mesh.num_tets(), e.target, r.stats);
 }
 
@@ -218,6 +220,10 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
   phase = Clock::now();
   control.report("verification", 0);
   VerificationInput in{&problem.tets, &v.source, &problem.boundary_vertices, &v.boundary_positions};
+  if (v.combinatorial) {
+    in.parents = &r.parents;
+    in.origin = &r.origin;
+  }
   r.verification = verify_map(in, r.tets, r.source, r.target);
   s.seconds_verify = seconds_since(phase);
   if (r.verification.ok()) return;
@@ -285,6 +291,7 @@ MapResult inputs_of(const MapResult& from, std::string why) {
   s.input_vertices = f.input_vertices, s.input_tets = f.input_tets;
   s.input_boundary_vertices = f.input_boundary_vertices, s.input_interior_vertices = f.input_interior_vertices;
   s.input_rounded = f.input_rounded;
+  s.combinatorial = f.combinatorial;
   s.seconds_validate = f.seconds_validate;
   s.local = f.local;
   s.local.init = "shrink";
@@ -292,12 +299,27 @@ MapResult inputs_of(const MapResult& from, std::string why) {
   return r;
 }
 
-MapResult map_to_domain(const MapProblem& given, const MapOptions& options) {
+namespace {
+
+// What a combinatorial run (MapOptions::combinatorial) can do: nothing that needs the source.
+MapOptions without_source_steps(MapOptions o) {
+  if (!o.combinatorial) return o;
+  o.init = InitialMapKind::shrink;
+  o.collapse = o.merge = o.flip_collapse = false;
+  o.collapse_refinement = false;
+  o.remap_doubles = false;
+  return o;
+}
+
+}  // namespace
+
+MapResult map_to_domain(const MapProblem& given, const MapOptions& requested) {
   const auto start = Clock::now();
+  const MapOptions options = without_source_steps(requested);
   MapResult r;
   MapStatistics& s = r.stats;
   const CoordinateArith& arith = options.placement.arith;
-  ValidatedProblem v = validate_problem(given, options.filter, options.placement.lp);
+  ValidatedProblem v = validate_problem(given, options.filter, options.placement.lp, options.combinatorial);
   MapProblem rounded;
   if (!arith.exact()) {
     rounded = given;
@@ -306,12 +328,13 @@ MapResult map_to_domain(const MapProblem& given, const MapOptions& options) {
   const MapProblem& problem = arith.exact() ? given : rounded;
   s.input_vertices = problem.source.size();
   s.input_tets = problem.tets.size();
+  s.combinatorial = options.combinatorial;
   s.input_boundary_vertices = problem.boundary_vertices.size();
   s.input_interior_vertices = s.input_vertices - s.input_boundary_vertices;
   try {
     if (s.input_rounded) {
       try {
-        v = validate_problem(problem, options.filter, options.placement.lp);
+        v = validate_problem(problem, options.filter, options.placement.lp, options.combinatorial);
       } catch (const MapError& e) {
         PrecisionLoss loss;
         loss.phase = "input";

@@ -109,6 +109,13 @@ struct MapOptions {
   double star_max_share = 0.5;
   double star_max_defect_share = 0.05;        // automatic: defects above this share of the tets fall back at once
   std::size_t threads = 0;
+  // A ball given by its tets alone (a facet list): MapProblem::source carries no geometry (any
+  // values, one per vertex). The run is a realisation of the complex: no source check (validation,
+  // invariants), none of the steps that rely on one (the collapses of added vertices, merges and
+  // flips; the local repair, so init is shrink; the doubles re-map); only splits refine the mesh.
+  // The verifier proves instead that the output is a subdivision of the input complex
+  // (verify/verify_subdivision.hpp, from MapResult::parents).
+  bool combinatorial = false;
 };
 
 // What a local repair did (InitialMapKind tutte, given, automatic).
@@ -125,6 +132,7 @@ struct LocalRepairStatistics {
 struct MapStatistics {
   std::size_t input_vertices = 0, input_tets = 0, input_boundary_vertices = 0, input_interior_vertices = 0;
   std::size_t input_rounded = 0;              // input coordinates a non-exact --arith rounded (it maps those)
+  bool combinatorial = false;                 // MapOptions::combinatorial: no source geometry
   // Preprocessing splits, by reason (algorithm/problem/preprocess.hpp).
   std::size_t split_topology = 0;             // chord faces/edges: the cluster mesh must be simply connected
   std::size_t split_all_boundary_tet = 0;     // all-boundary tet not positive
@@ -194,6 +202,11 @@ struct MapResult {
   std::optional<PrecisionLoss> loss;          // filled for precision_lost
   std::vector<topology::Tet> tets;            // output tets (input order, then new ones)
   std::vector<HPoint> source, target;         // one per output vertex; the first input_vertices are the input's
+  // MapOptions::combinatorial (empty otherwise): for every vertex ever made, by creation number,
+  // the two or three vertices (creation numbers) whose edge or face its split divided
+  // (invalid_index three times for an input vertex); and each output vertex's creation number.
+  std::vector<std::array<std::uint32_t, 3>> parents;
+  std::vector<std::uint32_t> origin;
   HPoint center;                              // the shrink point p_c
   MapStatistics stats;
   MapVerification verification;               // filled on success

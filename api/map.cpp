@@ -96,6 +96,7 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
   out.collapse_refinement = in.collapse_refinement;
   out.check = in.check;
   out.init = *init;
+  out.combinatorial = in.combinatorial;
   return std::nullopt;
 }
 
@@ -203,14 +204,16 @@ void fill_output(const algorithm::MapResult& in, MapResult& out) {
   out.target_exact.reserve(n);
   out.target_homogeneous.reserve(n);
   out.source.reserve(n);
+  // A combinatorial run has no source geometry: its source is the realisation itself.
+  const std::vector<HPoint>& source = in.stats.combinatorial ? in.target : in.source;
   for (std::size_t v = 0; v < n; ++v) {
-    out.source_exact.push_back(exact_text(in.source[v]));
+    out.source_exact.push_back(exact_text(source[v]));
     out.target_exact.push_back(exact_text(in.target[v]));
     const HPoint& t = in.target[v];
     out.target_homogeneous.push_back(
         {to_string(t.X()), to_string(t.Y()), to_string(t.Z()), to_string(t.W())});
-    out.source.push_back({to_double(in.source[v].coordinate(0)), to_double(in.source[v].coordinate(1)),
-                          to_double(in.source[v].coordinate(2))});
+    out.source.push_back(
+        {to_double(source[v].coordinate(0)), to_double(source[v].coordinate(1)), to_double(source[v].coordinate(2))});
   }
   out.target = in.doubles.target;
   out.exact_valid = in.verification.ok();

@@ -147,6 +147,9 @@ std::vector<ReportField> result_fields(const algorithm::MapResult& r) {
   in.num("boundary_vertices", n(s.input_boundary_vertices))
       .num("interior_vertices", n(s.input_interior_vertices));
   in.num("rounded_coordinates", n(s.input_rounded));
+  // A ball given by its tets alone: verdict.source_positive then says that the output subdivides
+  // the input complex (exact barycentric check), the source geometry being absent.
+  in.flag("combinatorial", s.combinatorial);
   out.num("vertices", n(s.output_vertices)).num("tets", n(s.output_tets)).num("growth_ratio", s.growth_ratio);
   bits.num("max", n(s.max_bits)).num("mean", s.mean_bits);
   std::vector<ReportField> f;

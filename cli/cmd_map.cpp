@@ -216,7 +216,7 @@ int fail(const MapArgs& a, int code, const std::string& status, const std::strin
 int load_problem(const MapArgs& a, algorithm::MapProblem& problem) {
   try {
     for (const std::string& p : input_paths(a)) check_readable(p);
-    problem = load_map_problem(a.domain, a.boundary, a.codomain, a.shape, a.seed);
+    problem = load_map_problem(a.domain, a.boundary, a.codomain, a.shape, a.seed, a.options.combinatorial);
     if (a.options.init == algorithm::InitialMapKind::given) load_initial_map(problem, a.init_file, a.codomain);
     return exit_ok;
   } catch (const io::IoError& e) {
@@ -235,8 +235,13 @@ int load_problem(const MapArgs& a, algorithm::MapProblem& problem) {
 void print_verdict(const MapArgs& a, const cmx::MapResult& r) {
   const MapStatistics& s = r.statistics;
   const std::string arith = to_string(a.options.placement.arith);
-  std::printf("map: success, verified exactly (every tet positive in source and target, boundary as prescribed)%s\n",
-              a.options.placement.arith.exact() ? "" : (", coordinates in " + arith).c_str());
+  if (a.options.combinatorial)
+    std::printf("map: success, a realisation verified exactly (every tet positive in the target, boundary as "
+                "prescribed, a subdivision of the input complex; no source geometry to check)%s\n",
+                a.options.placement.arith.exact() ? "" : (", coordinates in " + arith).c_str());
+  else
+    std::printf("map: success, verified exactly (every tet positive in source and target, boundary as prescribed)%s\n",
+                a.options.placement.arith.exact() ? "" : (", coordinates in " + arith).c_str());
   if (s.rounded_coordinates)
     std::printf("  input read in %s: %zu coordinates rounded; the map is verified for the rounded input\n", arith.c_str(),
                 s.rounded_coordinates);
@@ -296,6 +301,7 @@ cmx::MapOptions public_options(const MapArgs& a, const algorithm::MapProblem& pr
   if (in.init == algorithm::InitialMapKind::given) o.initial_target = exact_text(problem.initial_target);
   o.time_limit_seconds = in.time_limit_seconds;
   o.threads = in.threads;
+  o.combinatorial = in.combinatorial;
   o.collapse = in.collapse;
   o.merge = in.merge;
   o.flip_collapse = in.flip_collapse;

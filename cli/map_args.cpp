@@ -4,6 +4,7 @@
 #include "cli/command_line.hpp"
 #include "cli/common_options.hpp"
 #include "cli/option_values.hpp"
+#include "io/read_facets.hpp"
 #include "kernel/coordinate_arith.hpp"
 
 namespace cmx::cli {
@@ -17,7 +18,7 @@ const HelpText help = {
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
     "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
     "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--subclusters N]\n"
-    "               [--quiet] [--version]\n",
+    "               [--combinatorial] [--quiet] [--version]\n",
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
     "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
     "the verdict. Options take their value as --opt VALUE or --opt=VALUE.\n",
@@ -37,7 +38,16 @@ std::string one_of(const std::string& what, const std::string& text, const std::
 }
 
 void add_problem_options(CLI::App& app, MapArgs& a) {
-  app.add_option("DOMAIN", a.domain, "the mesh to map: .ovm .vtk .vtu .mesh .msh .node/.ele")->required()->type_name("");
+  app.add_option("DOMAIN", a.domain, "the mesh to map: .ovm .vtk .vtu .mesh .msh .node/.ele, or a facet\nlist .facets (then --combinatorial is implied)")
+      ->required()
+      ->type_name("");
+  app.add_flag("--combinatorial", a.options.combinatorial,
+               "DOMAIN is a ball given by its tets alone (a facet list, or a mesh\n"
+               "whose positions are ignored): the tets are oriented alike, the result\n"
+               "realises a subdivision of the complex in the target (every tet\n"
+               "positive, boundary as prescribed, checked exactly, and checked to\n"
+               "subdivide the complex); the .tmap's source columns are the target;\n"
+               "no collapses, init shrink; --shape works from the combinatorics");
   app.add_option("--boundary", a.boundary, "lines 'index x y z' (exact numbers) for exactly the boundary\nvertices")
       ->type_name("B.txt");
   app.add_option("--codomain", a.codomain, "a mesh with DOMAIN's connectivity whose boundary vertices give\nthe positions")
@@ -222,6 +232,7 @@ std::optional<int> parse_map_args(const std::vector<std::string>& args, MapArgs&
   add_expansion_options(app, a);
   add_arithmetic_options(app, a);
   if (const auto done = line.parse(args)) return done;
+  if (io::is_facet_list_path(a.domain)) a.options.combinatorial = true;
   if (!a.boundary.empty() + !a.codomain.empty() + !a.shape.empty() != 1)
     usage_error("give exactly one of --boundary, --codomain, --shape");
   if (a.options.init == algorithm::InitialMapKind::given && a.init_file.empty() && a.codomain.empty())

@@ -147,7 +147,7 @@ std::vector<std::uint32_t> shortest_path(const Surface& s, const std::vector<Vec
     if (v == to) break;
     for (auto u : s.neighbors[v]) {
       if (fixed[u] && u != to) continue;
-      const double du = d + norm(sub(src[u], src[v]));
+      const double du = d + (src.empty() ? 1.0 : norm(sub(src[u], src[v])));
       if (du < dist[u]) {
         dist[u] = du;
         prev[u] = v;
@@ -314,7 +314,9 @@ double spread_weights(const Surface& s, const std::vector<Vec3>& src, const std:
   const double outward = volume < 0 ? -1.0 : 1.0;
   std::vector<double> sum(n, 0.0), area(n, 0.0);
   for (const auto& f : s.faces) {
-    const std::array<Vec3, 3> from{src[f[0].idx()], src[f[1].idx()], src[f[2].idx()]};
+    // Without a source geometry every face stands for the same equilateral triangle.
+    const std::array<Vec3, 3> from = src.empty() ? std::array<Vec3, 3>{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0.5, std::sqrt(0.75), 0}}
+                                                 : std::array<Vec3, 3>{src[f[0].idx()], src[f[1].idx()], src[f[2].idx()]};
     const std::array<Vec3, 3> to{pos[f[0].idx()], pos[f[1].idx()], pos[f[2].idx()]};
     const double a = 0.5 * norm(cross(sub(from[1], from[0]), sub(from[2], from[0])));
     const double st = std::min(squared_stretch(from, to, outward), std::numeric_limits<double>::max());
@@ -487,7 +489,7 @@ std::string to_string(const BoundaryShapeSpec& spec) {
 
 GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::vector<Vec3>& source,
                                     const BoundaryShapeSpec& spec) {
-  if (source.size() != mesh.num_vertices())
+  if (!source.empty() && source.size() != mesh.num_vertices())
     return failure(text("the mesh has ", mesh.num_vertices(), " vertices but ", source.size(), " source positions were given"));
   for (std::size_t v = 0; v < source.size(); ++v)
     if (!finite(source[v])) return failure(text("source position of vertex ", v, " is not finite"));
@@ -495,7 +497,7 @@ GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::ve
   if (auto why = build_surface(mesh, s); !why.empty()) return failure(why);
   if (s.vertices.size() < 4)
     return failure(text("the boundary has ", s.vertices.size(), " vertices; at least 4 are needed"));
-  std::vector<Vec3> src(s.vertices.size());
+  std::vector<Vec3> src(source.empty() ? 0 : s.vertices.size());  // empty: no geometry
   for (std::size_t i = 0; i < src.size(); ++i) src[i] = source[s.vertices[i]];
 
   GeneratedBoundary g;

@@ -79,7 +79,9 @@ struct GeneratedBoundary {
 // Maximum number of corner choices tried by generate_boundary.
 inline constexpr int max_boundary_attempts = 100;
 
-// mesh: a ball-topology TetMesh; source: one position per vertex (the domain geometry). Returns
+// mesh: a ball-topology TetMesh; source: one position per vertex (the domain geometry), or empty for
+// a mesh given by its tets alone (then the paths are shortest in edges, and spreading measures
+// stretch against equilateral faces). Returns
 // ok = false with a message when `source` does not match the mesh or has a non-finite coordinate,
 // when the boundary is not a closed surface (an edge not in exactly two boundary faces) or has
 // fewer than 4 vertices, or when no attempt validates.

@@ -276,7 +276,13 @@ Embedding initial_embedding(const ValidatedProblem& v, const FilterPolicy& filte
   e.filter = filter;
   e.arith = arith;
   e.stats = stats;
+  e.source_free = v.combinatorial;
   const std::size_t n = v.source.size();
+  if (e.source_free) {
+    e.parents.assign(n, {topology::invalid_index, topology::invalid_index, topology::invalid_index});
+    e.origin.resize(n);
+    for (std::size_t i = 0; i < n; ++i) e.origin[i] = static_cast<std::uint32_t>(i);
+  }
   e.target.resize(n);
   e.unexpanded.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {

@@ -123,9 +123,11 @@ std::size_t first_emptying_halfspace(const std::vector<InnerHalfSpace>& hs, cons
   return SIZE_MAX;
 }
 
-ValidatedProblem validate_problem(const MapProblem& p, const FilterPolicy& filter, const lp::ChebyshevOptions& lp) {
+ValidatedProblem validate_problem(const MapProblem& p, const FilterPolicy& filter, const lp::ChebyshevOptions& lp,
+                                  bool combinatorial) {
   check_sizes(p);
   ValidatedProblem v;
+  v.combinatorial = combinatorial;
   const std::size_t n = p.source.size();
   v.mesh = topology::TetMesh(n, p.tets);
   const topology::BallVerdict ball = topology::check_ball(v.mesh);
@@ -133,7 +135,7 @@ ValidatedProblem validate_problem(const MapProblem& p, const FilterPolicy& filte
 
   v.source.reserve(n);
   for (const auto& q : p.source) v.source.emplace_back(q[0], q[1], q[2]);
-  for (std::size_t t = 0; t < p.tets.size(); ++t) {
+  for (std::size_t t = 0; !combinatorial && t < p.tets.size(); ++t) {
     const auto& x = p.tets[t];
     const Sign s =
         orient3d(v.source[x[0]], v.source[x[1]], v.source[x[2]], v.source[x[3]], {filter, nullptr});

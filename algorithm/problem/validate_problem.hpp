@@ -20,10 +20,13 @@ struct ValidatedProblem {
   std::vector<topology::BoundaryFace> boundary_faces;  // outward
   std::vector<InnerHalfSpace> kernel;               // per boundary face, prescribed positions
   std::vector<HPoint> boundary_positions;           // problem.boundary_positions as points
+  bool combinatorial = false;                       // the source positions carry no geometry
 };
 
-// Throws MapError of the matching kind.
-ValidatedProblem validate_problem(const MapProblem& problem, const FilterPolicy& filter, const lp::ChebyshevOptions& lp);
+// Throws MapError of the matching kind. combinatorial: the source positions carry no geometry
+// (MapOptions::combinatorial), so they are not checked.
+ValidatedProblem validate_problem(const MapProblem& problem, const FilterPolicy& filter, const lp::ChebyshevOptions& lp,
+                                  bool combinatorial = false);
 
 // The first prefix of `halfspaces` (in order) whose common interior is empty, found incrementally
 // (an LP only when the running centre leaves the new half-space). Returns the index of the

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "algorithm/describe.hpp"
+#include "algorithm/verify/verify_subdivision.hpp"
 #include "kernel/orient.hpp"
 #include "kernel/orient_exact.hpp"
 #include "topology/ball_check.hpp"
@@ -303,11 +304,17 @@ std::string check_boundary(const VerificationInput& in, const std::vector<topolo
   for (std::size_t k = 0; k < input_faces.size(); ++k) {
     const auto& f = input_faces[k].face;
     in_target_corners.push_back({&prescribed_by_vertex[f[0]], &prescribed_by_vertex[f[1]], &prescribed_by_vertex[f[2]]});
-    in_source_corners.push_back({&(*in.source)[f[0]], &(*in.source)[f[1]], &(*in.source)[f[2]]});
+    // Without a source geometry (a ball given by its tets alone) the second tiling repeats the
+    // target's: the subdivision check stands in for the source side.
+    if (in.parents)
+      in_source_corners.push_back(in_target_corners.back());
+    else
+      in_source_corners.push_back({&(*in.source)[f[0]], &(*in.source)[f[1]], &(*in.source)[f[2]]});
     for (auto v : f) incident[v].push_back(k);
     by_corners.emplace(canonical(f), k);
   }
-  BoundaryTiling in_target(std::move(in_target_corners), target), in_source(std::move(in_source_corners), source);
+  BoundaryTiling in_target(std::move(in_target_corners), target),
+      in_source(std::move(in_source_corners), in.parents ? target : source);
   for (const auto& bf : topology::boundary_faces(topology::TetMesh(target.size(), tets))) {
     if (const auto same = by_corners.find(canonical(bf.face)); same != by_corners.end()) {
       in_target.add_whole(same->second);
@@ -338,14 +345,21 @@ MapVerification verify_map(const VerificationInput& in, const std::vector<topolo
   if (!v.target_positive)
     fail("tet " + tet_text(tets[t.first_bad]) + " is " + (t.first_sign == Sign::zero ? "degenerate" : "inverted") +
          " in the target (" + std::to_string(t.negative) + " inverted, " + std::to_string(t.zero) + " degenerate)");
-  const Counts s = orientation_counts(tets, source);
-  v.source_positive = s.first_bad == SIZE_MAX;
-  if (!v.source_positive) fail("tet " + tet_text(tets[s.first_bad]) + " is not positive in the source");
+  if (in.parents) {
+    const std::string why =
+        in.origin ? verify_subdivision(*in.tets, in.source->size(), tets, *in.parents, *in.origin) : "no vertex origins";
+    v.source_positive = why.empty();
+    if (!why.empty()) fail("not a subdivision of the input complex: " + why);
+  } else {
+    const Counts s = orientation_counts(tets, source);
+    v.source_positive = s.first_bad == SIZE_MAX;
+    if (!v.source_positive) fail("tet " + tet_text(tets[s.first_bad]) + " is not positive in the source");
+  }
 
   const std::size_t n_in = in.source->size();
   std::vector<HPoint> prescribed_by_vertex(n_in);
   v.input_kept = source.size() >= n_in && target.size() == source.size();
-  for (std::size_t i = 0; v.input_kept && i < n_in; ++i)
+  for (std::size_t i = 0; v.input_kept && !in.parents && i < n_in; ++i)
     if (!(source[i] == (*in.source)[i])) {
       v.input_kept = false;
       fail("input vertex " + std::to_string(i) + " moved in the source");

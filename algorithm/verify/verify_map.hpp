@@ -4,7 +4,8 @@
 // output tets alone, and exact rational areas for the boundary.
 //
 // A map passes when
-//   * every output tet is strictly positive in the target and in the source;
+//   * every output tet is strictly positive in the target and in the source (for a ball given by
+//     its tets alone: a subdivision of the input complex, verify_subdivision.hpp);
 //   * the first input_vertices output vertices keep their input source positions, and every input
 //     boundary vertex sits exactly at its prescribed target position;
 //   * the output mesh is a ball (topology::check_ball);
@@ -41,6 +42,12 @@ struct VerificationInput {
   const std::vector<HPoint>* source = nullptr;             // input source positions
   const std::vector<std::uint32_t>* boundary_vertices = nullptr;
   const std::vector<HPoint>* boundary_positions = nullptr;  // prescribed, one per boundary vertex
+  // A ball given by its tets alone (MapOptions::combinatorial): the source positions carry no
+  // geometry. Then the source side of the check is verify_subdivision.hpp on these records
+  // (MapResult::parents and origin; source_positive says whether it holds), input source positions are not
+  // compared, and the boundary tiling is checked in the target only.
+  const std::vector<std::array<std::uint32_t, 3>>* parents = nullptr;
+  const std::vector<std::uint32_t>* origin = nullptr;
 };
 
 // The orientation the verifier uses (sign of det[b-a, c-a, d-a]): a static double filter of its

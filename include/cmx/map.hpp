@@ -83,6 +83,14 @@ struct MapOptions {
   std::string arith = "rational";    // coordinate arithmetic: rational (exact), double, mpfr:BITS
   std::size_t subclusters = 4;       // largest subcluster expanded at once, 2..4 (0 or 1: off)
   std::size_t smooth = 0;            // Laplacian smoothing period in expansions (0: off)
+  // A ball given by its tets alone (cmx map --combinatorial): the vertices' positions are ignored
+  // (give any, one per vertex) and the tets need only be oriented alike. The result realises a
+  // subdivision of the complex: every tet positive in the target, the boundary as prescribed, and
+  // exact_valid includes an exact check that the output subdivides the input complex (barycentric
+  // coordinates from the splits). MapResult::source and source_exact are then the target (there is
+  // no source geometry). init, collapse, merge, flip_collapse and collapse_refinement are ignored:
+  // only splits refine the mesh.
+  bool combinatorial = false;
   // Called now and then during the run, on the calling thread.
   std::function<void(const MapProgress&)> progress;
   // Polled between steps; once it returns true the run stops at the next step and returns

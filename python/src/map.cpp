@@ -70,7 +70,8 @@ using Fields = std::initializer_list<std::pair<std::string_view, T MapOptions::*
 const Fields<std::size_t> count_fields = {{"threads", &MapOptions::threads},
                                           {"subclusters", &MapOptions::subclusters},
                                           {"smooth", &MapOptions::smooth}};
-const Fields<bool> bool_fields = {{"collapse", &MapOptions::collapse}, {"check", &MapOptions::check}};
+const Fields<bool> bool_fields = {
+    {"collapse", &MapOptions::collapse}, {"check", &MapOptions::check}, {"combinatorial", &MapOptions::combinatorial}};
 const Fields<std::string> text_fields = {
     {"snap", &MapOptions::snap},  {"order", &MapOptions::order}, {"filter", &MapOptions::filter},
     {"lp", &MapOptions::lp},      {"norm", &MapOptions::norm},   {"precision", &MapOptions::precision},

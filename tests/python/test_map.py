@@ -119,3 +119,19 @@ def test_given_initial_target(ball):
     ids = cmx.boundary_vertices(T)
     r = cmx.map(V, T, boundary=(ids, start[ids]), init=start)
     check_map(r, V, T)
+
+
+def test_combinatorial_map_ignores_the_positions(ball):
+    """combinatorial=True: V carries no geometry (zeros here); the tets, oriented alike, are realised
+    in the target, whose source columns are the realisation itself."""
+    V, T = ball
+    ids, positions = cmx.boundary_for_shape(V, T, "star")
+    r = cmx.map(np.zeros_like(V), T, boundary=(ids, positions), combinatorial=True)
+    assert r.ok and r.exact_valid
+    assert r.report["input"]["combinatorial"] is True
+    assert r.report["verdict"]["source_positive"] is True  # here: a subdivision of the complex
+    assert exactly_positive(r.target_exact, r.tets) == []
+    assert r.source_exact == r.target_exact
+    # without it, the zero positions are flat tets: refused
+    with pytest.raises(cmx.InvalidInput):
+        cmx.map(np.zeros_like(V), T, boundary=(ids, positions))

@@ -1,0 +1,113 @@
+// Balls given by their tets alone (MapOptions::combinatorial): the map is a realisation of a
+// subdivision of the complex, every tet positive in the target, the boundary as prescribed, and
+// the verifier's subdivision check (verify/verify_subdivision.hpp) proves "same complex" and fails
+// on a record or a tet that is wrong.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "algorithm/map.hpp"
+#include "algorithm/verify/verify_subdivision.hpp"
+#include "arith/rounding.hpp"
+#include "generators/boundary_shapes.hpp"
+#include "generators/domain_generators.hpp"
+#include "support/combinatorial_balls.hpp"
+#include "topology/ball_check.hpp"
+#include "topology/coherent_orientation.hpp"
+
+namespace alg = cmx::algorithm;
+namespace topo = cmx::topology;
+
+namespace {
+
+// The problem of mapping `facets` (oriented here) onto a generated shape, with no source geometry.
+alg::MapProblem combinatorial_problem(const std::vector<std::array<std::uint32_t, 4>>& facets,
+                                      cmx::generators::BoundaryShape shape) {
+  std::uint32_t n = 0;
+  for (const auto& f : facets)
+    for (auto v : f) n = std::max(n, v + 1);
+  topo::TetMesh mesh(n, facets);
+  REQUIRE(topo::orient_coherently(mesh).ok);
+  REQUIRE(topo::check_ball(mesh).ok);
+  const auto g = cmx::generators::generate_boundary(mesh, {}, {shape, 1234, 0});
+  INFO(g.message);
+  REQUIRE(g.ok);
+  alg::MapProblem p;
+  for (topo::TetId t : mesh.live_tets()) p.tets.push_back(mesh.tet(t));
+  p.source.assign(n, cmx::Point3{});  // no geometry: zeros
+  p.boundary_vertices = g.vertices;
+  for (const auto& q : g.positions)
+    p.boundary_positions.push_back(
+        {cmx::rational_from_double(q[0]), cmx::rational_from_double(q[1]), cmx::rational_from_double(q[2])});
+  return p;
+}
+
+alg::MapResult map_combinatorially(const alg::MapProblem& p) {
+  alg::MapOptions o;
+  o.combinatorial = true;
+  o.check = true;
+  return alg::map_to_domain(p, o);
+}
+
+void check_realisation(const alg::MapProblem& p, const alg::MapResult& r) {
+  INFO(r.message);
+  REQUIRE(r.outcome == alg::MapOutcome::success);
+  INFO(r.verification.first_failure);
+  CHECK(r.verification.ok());
+  CHECK(r.verification.target_positive);
+  CHECK(r.verification.source_positive);  // here: a subdivision of the input complex
+  REQUIRE(r.origin.size() == r.target.size());
+  REQUIRE(r.parents.size() >= r.target.size());
+  CHECK(alg::verify_subdivision(p.tets, p.source.size(), r.tets, r.parents, r.origin).empty());
+  CHECK(r.target.size() > p.source.size());  // every vertex is on the boundary: splits were needed
+  CHECK(r.stats.collapsed == 0);
+}
+
+}  // namespace
+
+TEST_CASE("combinatorial maps realise Ziegler's ball on a tet, a sphere and a random star") {
+  for (auto shape : {cmx::generators::BoundaryShape::tet, cmx::generators::BoundaryShape::sphere,
+                     cmx::generators::BoundaryShape::star}) {
+    const alg::MapProblem p = combinatorial_problem(cmx::test::ziegler_ball(), shape);
+    check_realisation(p, map_combinatorially(p));
+  }
+}
+
+TEST_CASE("without --combinatorial, a problem without source geometry is refused as not positive") {
+  const alg::MapProblem p = combinatorial_problem(cmx::test::ziegler_ball(), cmx::generators::BoundaryShape::sphere);
+  CHECK_THROWS_AS(alg::map_to_domain(p, {}), alg::MapError);
+}
+
+TEST_CASE("verify_subdivision: fails on a wrong parent record, a turned tet and a missing tet") {
+  const alg::MapProblem p = combinatorial_problem(cmx::test::ziegler_ball(), cmx::generators::BoundaryShape::tet);
+  const alg::MapResult r = map_combinatorially(p);
+  REQUIRE(r.outcome == alg::MapOutcome::success);
+  const std::size_t n = p.source.size();
+  REQUIRE(alg::verify_subdivision(p.tets, n, r.tets, r.parents, r.origin).empty());
+
+  auto parents = r.parents;  // the first added vertex said to split another edge
+  REQUIRE(parents.size() > n);
+  parents[n] = {0, 1, topo::invalid_index};
+  if (r.parents[n] == parents[n]) parents[n] = {1, 2, topo::invalid_index};
+  CHECK_FALSE(alg::verify_subdivision(p.tets, n, r.tets, parents, r.origin).empty());
+
+  auto turned = r.tets;
+  std::swap(turned[0][2], turned[0][3]);
+  const std::string inverted = alg::verify_subdivision(p.tets, n, turned, r.parents, r.origin);
+  CHECK(inverted.find("inverted") != std::string::npos);
+
+  auto fewer = r.tets;
+  fewer.pop_back();
+  const std::string gap = alg::verify_subdivision(p.tets, n, fewer, r.parents, r.origin);
+  CHECK(gap.find("not exactly all") != std::string::npos);
+}
+
+TEST_CASE("combinatorial maps of generated balls: their positions are ignored") {
+  // A perturbed grid's tets with its geometry thrown away map like any facet list.
+  const auto grid = cmx::generators::perturbed_grid(3, 2, 2, 1);
+  std::vector<std::array<std::uint32_t, 4>> facets;
+  for (topo::TetId t : grid.mesh.live_tets()) facets.push_back(topo::indices_of(grid.mesh.tet(t)));
+  const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::star);
+  check_realisation(p, map_combinatorially(p));
+}
