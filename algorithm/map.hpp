@@ -165,6 +165,7 @@ struct MapStatistics {
   bool shelling_found = false;
   std::size_t shelling_attempts = 0, shelling_best_removed = 0;
   std::size_t refinement_collapses = 0;       // added vertices collapsed right after their refinement
+  std::size_t expansion_restarts = 0;         // runaway restarts (expansion/cluster_expansion.hpp)
   // Double output.
   std::size_t chebyshev_moves = 0;            // exact positions changed by the Chebyshev pass
   std::size_t snap_exact_rounds = 0, snap_repaired = 0, snap_rounds = 0;

@@ -52,6 +52,7 @@ void add_collapse_counts(JsonObject& ex, const algorithm::MapStatistics& s) {
     ex.obj("input_shelling", shell);
   }
   ex.num("refinement_collapses", n(s.refinement_collapses));
+  ex.num("restarts", n(s.expansion_restarts));  // runaway restarts (expansion/cluster_expansion.hpp)
 }
 
 JsonObject expansion_json(const algorithm::MapStatistics& s) {

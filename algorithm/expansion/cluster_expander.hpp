@@ -38,23 +38,35 @@ class Relabel {
   const char* saved_;
 };
 
+// A copy of the loop's state for the runaway restarts (cluster_expansion.hpp).
+struct Checkpoint {
+  Embedding embedding;  // without per-vertex properties (a copy starts without them)
+  MapStatistics stats;
+  std::size_t cluster = 0;
+  bool halved = false;  // taken because the cluster halved (not at the start of an attempt)
+};
+
 class ClusterExpander {
  public:
-  ClusterExpander(Embedding& e, const ExpansionSettings& s, MapStatistics& stats)
+  ClusterExpander(Embedding& e, const ExpansionSettings& s, MapStatistics& stats, bool watch_runaway = false)
       : e_(e),
         s_(s),
         stats_(stats),
+        watch_runaway_(watch_runaway),
         queue_(e, s.order),
         cached_(e.properties.make<std::optional<Placement>>(e.num_vertices())),
         float_centre_(e.properties.make<std::optional<std::array<double, 3>>>(e.num_vertices())),
         guess_wrong_(e.properties.make<char>(e.num_vertices(), 0)) {}
 
   ExpansionOutcome run();
+  // After run() returned a runaway: the state to go back to.
+  std::optional<Checkpoint> take_checkpoint() { return std::move(checkpoint_); }
 
  private:
   // --- bookkeeping -------------------------------------------------------------------------
 
   void classify_marked();  // evaluate() every vertex the queue has marked
+  bool runaway();          // keeps the checkpoint; true when the cluster passed the runaway bound
   std::optional<ExpansionOutcome> check_limits() const;
   ExpansionOutcome stuck() const;
   void report_progress(bool final);
@@ -139,6 +151,8 @@ class ClusterExpander {
   Embedding& e_;
   const ExpansionSettings& s_;
   MapStatistics& stats_;
+  bool watch_runaway_;
+  std::optional<Checkpoint> checkpoint_;
   topology::ClusterLinkWorkspace ws_;
   CandidateQueue queue_;  // line 5's candidates and the vertices to classify again
   // Per-vertex state, grown with the mesh (Embedding::properties).

@@ -20,6 +20,17 @@ void ClusterExpander::classify_marked() {
   while (const std::optional<VertexId> v = queue_.take_marked()) evaluate(*v);
 }
 
+bool ClusterExpander::runaway() {
+  if (!watch_runaway_) return false;
+  if (!checkpoint_ || 2 * cluster_ <= checkpoint_->cluster) {
+    const bool halved = checkpoint_.has_value();
+    checkpoint_ = Checkpoint{e_, stats_, cluster_, halved};
+    return false;
+  }
+  const std::size_t added = e_.num_vertices() - checkpoint_->embedding.num_vertices();
+  return cluster_ > 2 * checkpoint_->cluster + 64 || added > 16 * checkpoint_->cluster + 1024;
+}
+
 std::optional<ExpansionOutcome> ClusterExpander::check_limits() const {
   if (s_.control && s_.control->should_stop("expansion"))
     return ExpansionOutcome{MapOutcome::time_limit,
@@ -269,7 +280,28 @@ void ClusterExpander::smooth_vertex(VertexId b) {
 }  // namespace detail
 
 ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats) {
-  return detail::ClusterExpander(e, settings, stats).run();
+  ExpansionSettings s = settings;
+  std::optional<detail::Checkpoint> first;  // the state before any expansion
+  if (settings.max_restarts > 0) first = detail::Checkpoint{e, stats, 0};
+  for (std::size_t restart = 0;; ++restart) {
+    const bool watch = restart < settings.max_restarts;
+    ExpansionOutcome out;
+    std::optional<detail::Checkpoint> back;
+    {
+      detail::ClusterExpander x(e, s, stats, watch);
+      out = x.run();
+      if (out.runaway) back = x.take_checkpoint();
+    }  // the expander's per-vertex properties are released before the embedding is replaced
+    if (!out.runaway) return out;
+    // Back to the last copy when the cluster halved in this attempt; a copy that one attempt
+    // could not halve again may be a trap (on Rudin's ball most failures end at the same 15
+    // vertices), so an attempt that did not halve goes back to the very start.
+    if (!back->halved) back = first;
+    e = std::move(back->embedding);
+    stats = std::move(back->stats);
+    stats.expansion_restarts = restart + 1;
+    s.order = topology::ExpansionOrder{topology::ExpansionOrderKind::random, restart + 1};
+  }
 }
 
 }  // namespace cmx::algorithm

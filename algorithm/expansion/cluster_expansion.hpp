@@ -52,13 +52,31 @@ struct ExpansionSettings {
   std::size_t smooth_every = 0;   // smoothing period in expansions (0: off)
   bool collapse_after_refinement = true;  // paper Sec. 4.2.2 (MapOptions::collapse_refinement)
   std::size_t subcluster_size = 4;        // largest subcluster tried (< 2: off; MapOptions::subclusters)
+  // Runaway restarts (below): how many, at most; 0 turns the detection off.
+  std::size_t max_restarts = 8;
 };
 
 struct ExpansionOutcome {
   MapOutcome outcome = MapOutcome::success;
   std::string message;
   bool nobuenoss = false;  // stuck because no cluster vertex satisfies Eq. (1)
+  bool runaway = false;    // internal: the cluster grew past the runaway bound (see below)
 };
+
+// Runaway restarts. Refinement can feed itself: a star-shapification's pushes put new vertices
+// into the cluster, whose own expansion pushes again, and the cluster grows without end (Rudin's
+// ball mapped combinatorially: from 30 cluster vertices to 2,000 in five minutes). Whether it does
+// depends on the order of the candidates (on Rudin's ball about half of the random tie-breaks
+// finish in under a second). So the loop keeps a copy of the state (embedding and statistics)
+// each time the cluster has halved since the last copy, and when the cluster exceeds twice the
+// size it had at the copy plus 64, or refinement has added more than 16 vertices per cluster vertex
+// of the copy plus 1,024 without halving it (a churn that does not grow the cluster, seen on the
+// same ball), it goes back to the copy and continues with the tie-breaks of
+// random:K (K = 1, 2, ...), at most max_restarts times; after that it runs on without the bound.
+// An attempt that did not halve the cluster goes back to the state before the first expansion
+// instead (a copy that no order could halve again may be a trap).
+// A heuristic: it does not make the expansion's success certain (issue 21 point 1 asks for a
+// star-shapification that is), and the output stays deterministic (the restarts are too).
 
 ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats);
 

@@ -40,6 +40,7 @@ ExpansionOutcome ClusterExpander::run() {
       queue_.mark(v);
     }
   classify_marked();
+  if (watch_runaway_) checkpoint_ = Checkpoint{e_, stats_, cluster_};
   while (cluster_ > 0) {
     if (auto stop = check_limits()) return *stop;
     report_progress(false);
@@ -71,6 +72,11 @@ ExpansionOutcome ClusterExpander::run() {
       next_smooth_ = expanded_ + s_.smooth_every;
     }
     classify_marked();
+    if (runaway()) {
+      ExpansionOutcome out{MapOutcome::stuck, "the cluster ran away", false};
+      out.runaway = true;
+      return out;
+    }
   }
   report_progress(true);
   return {MapOutcome::success, {}};

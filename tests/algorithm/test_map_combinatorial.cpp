@@ -111,3 +111,17 @@ TEST_CASE("combinatorial maps of generated balls: their positions are ignored") 
   const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::star);
   check_realisation(p, map_combinatorially(p));
 }
+
+TEST_CASE("Rudin's ball is realised on a sphere after a runaway restart") {
+  // Every vertex of Rudin's ball is on the boundary; the expansion of its preprocessing splits runs
+  // away (the cluster grows without end) in the default order, and the restart from the start
+  // with random tie-breaks finishes (expansion/cluster_expansion.hpp, "Runaway restarts").
+  const alg::MapProblem p = combinatorial_problem(cmx::test::rudin_ball(), cmx::generators::BoundaryShape::sphere);
+  alg::MapOptions o;
+  o.combinatorial = true;
+  o.time_limit_seconds = 600;  // a bound for the test only: a runaway would otherwise not end
+  const alg::MapResult r = alg::map_to_domain(p, o);
+  CAPTURE(r.stats.expansion_restarts);
+  check_realisation(p, r);
+  CHECK(r.stats.expansion_restarts >= 1);
+}
