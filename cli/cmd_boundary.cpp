@@ -28,7 +28,8 @@ namespace cmx::cli {
 namespace {
 
 const HelpText help = {
-    "usage: cmx boundary MESH --shape SHAPE -o B.txt [--seed N] [--spread N]\n",
+    "usage: cmx boundary MESH --shape SHAPE -o B.txt [--seed N] [--spread N]\n"
+    "                    [--corners random|farthest]\n",
     "Generates prescribed positions for the boundary vertices of MESH (a ball), star-shaped about\n"
     "the origin, and writes 'index x y z' per boundary vertex (exact decimal doubles).\n",
     "Exit status: 0 written; 2 bad command line (also: B.txt is MESH); 3 unreadable MESH; 4 MESH is\n"
@@ -40,6 +41,7 @@ struct BoundaryArgs {
   generators::BoundaryShapeSpec shape;
   std::optional<std::uint64_t> seed;
   int spread = 0;
+  generators::CornerChoice corners = generators::CornerChoice::random;
 };
 
 void add_options(CLI::App& app, BoundaryArgs& a) {
@@ -69,12 +71,24 @@ void add_options(CLI::App& app, BoundaryArgs& a) {
                  "(fingers, tunnels) get a fair share of the shape; 0 to 100")
       ->type_name("N")
       ->check(CLI::Range(0, 100));
+  const auto corners = [](const std::string& text) {
+    if (text == "random") return generators::CornerChoice::random;
+    if (text == "farthest") return generators::CornerChoice::farthest;
+    throw std::invalid_argument("unknown corner choice '" + text + "' (random or farthest)");
+  };
+  add_parsed(app, "--corners", a.corners, corners,
+             "random (default: the tetrahedron's corners go to drawn boundary\n"
+             "vertices) or farthest (to the ends of the longest protrusion or tunnel\n"
+             "and two vertices far from both, so that its vertices are spaced along\n"
+             "edges instead of crowded into a face; stiff-tet always draws)")
+      ->type_name("C");
 }
 
 // The shape with --seed applied; two different seeds are a contradiction.
 generators::BoundaryShapeSpec shape_with_seed(const BoundaryArgs& a) {
   generators::BoundaryShapeSpec spec = a.shape;
   spec.spread = a.spread;
+  spec.corners = a.corners;
   if (!a.seed) return spec;
   if (a.shape_text.find(':') != std::string::npos && *a.seed != spec.seed)
     usage_error("two different seeds given: " + a.shape_text + " and --seed " + std::to_string(*a.seed));

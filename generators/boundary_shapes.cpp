@@ -9,9 +9,12 @@
 #include <numbers>
 #include <queue>
 #include <random>
+#include <set>
+#include <span>
 #include <string_view>
 #include <utility>
 
+#include "generators/disjoint_paths.hpp"
 #include "kernel/orient.hpp"
 #include "topology/complex_queries.hpp"
 
@@ -129,8 +132,16 @@ std::string build_surface(const topology::TetMesh& mesh, Surface& s) {
 
 // Shortest path from `from` to `to` over boundary edges, avoiding fixed vertices other than `to`
 // (Dijkstra; ties broken by vertex id, so the result is deterministic). Empty when none exists.
+// With `keep_apart`, a step onto a vertex next to a fixed one costs twice its length: a path then
+// keeps off the paths already fixed where it can, and leaves free vertices between them through
+// which the later paths still pass.
 std::vector<std::uint32_t> shortest_path(const Surface& s, const std::vector<Vec3>& src, const std::vector<char>& fixed,
-                                         std::uint32_t from, std::uint32_t to) {
+                                         std::uint32_t from, std::uint32_t to, bool keep_apart) {
+  const auto next_to_fixed = [&](std::uint32_t u) {
+    for (auto w : s.neighbors[u])
+      if (fixed[w] && w != to && w != from) return true;
+    return false;
+  };
   const auto& adj = s.neighbors[from];
   if (std::binary_search(adj.begin(), adj.end(), to)) return {from, to};
   const std::size_t n = s.vertices.size();
@@ -147,7 +158,8 @@ std::vector<std::uint32_t> shortest_path(const Surface& s, const std::vector<Vec
     if (v == to) break;
     for (auto u : s.neighbors[v]) {
       if (fixed[u] && u != to) continue;
-      const double du = d + (src.empty() ? 1.0 : norm(sub(src[u], src[v])));
+      const double step = src.empty() ? 1.0 : norm(sub(src[u], src[v]));
+      const double du = d + (keep_apart && next_to_fixed(u) ? 2 * step : step);
       if (du < dist[u]) {
         dist[u] = du;
         prev[u] = v;
@@ -353,8 +365,94 @@ const std::array<Vec3, 4>& tet_corners() {
   return corners;
 }
 
+// Surface distances (Dijkstra, the source's edge lengths or unit lengths without a source) from
+// the nearest of `from`.
+std::vector<double> distances_from(const Surface& s, const std::vector<Vec3>& src,
+                                   std::span<const std::uint32_t> from) {
+  std::vector<double> dist(s.vertices.size(), std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, std::uint32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (auto v : from) {
+    dist[v] = 0;
+    queue.push({0.0, v});
+  }
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > dist[v]) continue;
+    for (auto u : s.neighbors[v]) {
+      const double du = d + (src.empty() ? 1.0 : norm(sub(src[u], src[v])));
+      if (du < dist[u]) {
+        dist[u] = du;
+        queue.push({du, u});
+      }
+    }
+  }
+  return dist;
+}
+
+// The vertex farthest from `from` among those with `allowed` set (all when empty; the lowest id
+// among equals; unreachable ones are skipped).
+std::uint32_t farthest_from(const Surface& s, const std::vector<Vec3>& src,
+                            std::span<const std::uint32_t> from, const std::vector<char>& allowed = {}) {
+  const auto dist = distances_from(s, src, from);
+  std::uint32_t best = from[0];
+  for (std::uint32_t v = 0; v < dist.size(); ++v)
+    if ((allowed.empty() || allowed[v]) && std::isfinite(dist[v]) &&
+        (best == from[0] || dist[v] > dist[best]))
+      best = v;
+  return best;
+}
+
+// CornerChoice::farthest: from a drawn vertex, the vertex farthest from it and the one farthest
+// from that: the two ends of the surface's longest stretch (the closed end of a tunnel or the tip
+// of a protrusion, typically, and a point far from its mouth). One end becomes corner 0, from
+// which three paths leave (fix_corner_paths), so that they run together down the stretch and
+// space its vertices along three of the tetrahedron's edges instead of crowding it into a face;
+// which end is the inner one is not known, so `swap_ends` swaps them. Corners 2 and 3 are taken
+// far out of the stretch: among the vertices at least 3/4 as far from corner 0 as corner 1 is
+// and, with a source, less than 3/2 as far from corner 1 over the surface as in space (a vertex
+// in a tunnel is much farther over the surface), the farthest from corner 1 and then from 1 and
+// 2 when `draw_rest` is false, drawn ones when it is true.
+std::array<std::uint32_t, 4> farthest_corners(const Surface& s, const std::vector<Vec3>& src, bool swap_ends,
+                                              bool draw_rest, std::mt19937_64& rng) {
+  const auto start = static_cast<std::uint32_t>(draw_below(rng, s.vertices.size()));
+  std::array<std::uint32_t, 4> c{};
+  c[1] = farthest_from(s, src, std::span(&start, 1));
+  c[0] = farthest_from(s, src, std::span(c.data() + 1, 1));
+  if (swap_ends) std::swap(c[0], c[1]);
+  const auto from0 = distances_from(s, src, std::span(c.data(), 1));
+  const auto from1 = distances_from(s, src, std::span(c.data() + 1, 1));
+  std::vector<char> far_out(from0.size(), 0);
+  std::vector<std::uint32_t> candidates;
+  for (std::uint32_t v = 0; v < from0.size(); ++v) {
+    far_out[v] = std::isfinite(from0[v]) && from0[v] >= 0.75 * from0[c[1]] && v != c[1] &&
+                 (src.empty() || from1[v] < 1.5 * norm(sub(src[v], src[c[1]])));
+    if (far_out[v]) candidates.push_back(v);
+  }
+  if (candidates.size() < 2) return c;  // c[2] = c[3]: the caller draws instead
+  if (draw_rest) {
+    c[2] = candidates[draw_below(rng, candidates.size())];
+    c[3] = candidates[draw_below(rng, candidates.size())];
+  } else {
+    c[2] = farthest_from(s, src, std::span(c.data() + 1, 1), far_out);
+    c[3] = farthest_from(s, src, std::span(c.data() + 1, 2), far_out);
+  }
+  return c;
+}
+
 // Four distinct corners (local ids) for attempt `rng`.
-std::array<std::uint32_t, 4> choose_corners(const Surface& s, BoundaryShape shape, std::mt19937_64& rng) {
+// CornerChoice::farthest alternates: farthest corners on even attempts (from different drawn
+// starts, which often lead to the same corners; every other time with the ends swapped), drawn
+// ones on odd attempts.
+std::array<std::uint32_t, 4> choose_corners(const Surface& s, const std::vector<Vec3>& src,
+                                            const BoundaryShapeSpec& spec, int attempt,
+                                            std::mt19937_64& rng) {
+  const BoundaryShape shape = spec.shape;
+  if (spec.corners == CornerChoice::farthest && shape != BoundaryShape::stiff_tet && attempt % 2 == 0) {
+    const auto c = farthest_corners(s, src, attempt % 4 == 2, attempt >= 4, rng);
+    if (std::set<std::uint32_t>(c.begin(), c.end()).size() == 4) return c;
+  }
   std::array<std::uint32_t, 4> c{};
   int chosen = 0;
   if (shape == BoundaryShape::stiff_tet) {
@@ -369,10 +467,41 @@ std::array<std::uint32_t, 4> choose_corners(const Surface& s, BoundaryShape shap
   return c;
 }
 
+// Fixes the inner vertices of `path` (from corner `a` to corner `b`) on the tetrahedron's edge
+// between them, evenly spaced.
+void place_on_edge(const std::vector<std::uint32_t>& path, std::size_t a, std::size_t b, std::vector<char>& fixed,
+                   std::vector<Vec3>& pos) {
+  const auto& tet = tet_corners();
+  const std::size_t m = path.size() - 2;  // inner vertices
+  for (std::size_t k = 1; k <= m; ++k) {
+    const double t = double(k) / double(m + 1);
+    fixed[path[k]] = 1;
+    for (std::size_t i = 0; i < 3; ++i) pos[path[k]][i] = (1 - t) * tet[a][i] + t * tet[b][i];
+  }
+}
+
+// Farthest corners: the three paths from corner 0 (the inner end of a tunnel or protrusion)
+// together, as disjoint paths of least total length, which exist on every triangulated sphere;
+// one after another, the first two shortest paths down a narrow tunnel can leave the third no
+// way in.
+std::string fix_paths_from_corner0(const Surface& s, const std::vector<Vec3>& src,
+                                   const std::array<std::uint32_t, 4>& corners, std::vector<char>& fixed,
+                                   std::vector<Vec3>& pos) {
+  const auto length = [&](std::uint32_t u, std::uint32_t v) { return src.empty() ? 1.0 : norm(sub(src[u], src[v])); };
+  const std::vector<char> none(s.vertices.size(), 0);
+  const auto paths = disjoint_paths(s.neighbors, length, corners[0], std::span(corners).subspan(1), none);
+  if (paths.empty()) return text("no three disjoint boundary paths from corner ", s.vertices[corners[0]]);
+  for (std::size_t j = 1; j < 4; ++j) place_on_edge(paths[j - 1], 0, j, fixed, pos);
+  return "";
+}
+
 // Steps 1 and 2 of the construction: the corners go to the tetrahedron's corners, the paths
-// between them to its edges; marks them fixed. "" or why it failed.
+// between them to its edges; marks them fixed. "" or why it failed. Drawn corners: the paths
+// one after another, 1-0, 2-0, 2-1, 3-0, 3-1, 3-2. Farthest corners (keep_apart): the three
+// into corner 0 first (fix_paths_from_corner0), then 2-1, 3-1 and 3-2, each of which cuts a
+// face off the disc that remains.
 std::string fix_corner_paths(const Surface& s, const std::vector<Vec3>& src, const std::array<std::uint32_t, 4>& corners,
-                             std::vector<char>& fixed, std::vector<Vec3>& pos) {
+                             bool keep_apart, std::vector<char>& fixed, std::vector<Vec3>& pos) {
   const auto& tet = tet_corners();
   const std::size_t n = s.vertices.size();
   fixed.assign(n, 0);
@@ -381,18 +510,18 @@ std::string fix_corner_paths(const Surface& s, const std::vector<Vec3>& src, con
     fixed[corners[j]] = 1;
     pos[corners[j]] = tet[j];
   }
-  for (std::size_t j = 1; j < 4; ++j)
-    for (std::size_t i = 0; i < j; ++i) {
-      const auto path = shortest_path(s, src, fixed, corners[j], corners[i]);
-      if (path.empty())
-        return text("no free boundary path between corners ", s.vertices[corners[j]], " and ", s.vertices[corners[i]]);
-      const std::size_t m = path.size() - 2;  // inner vertices
-      for (std::size_t k = 1; k <= m; ++k) {
-        const double t = double(k) / double(m + 1);
-        fixed[path[k]] = 1;
-        for (std::size_t a = 0; a < 3; ++a) pos[path[k]][a] = (1 - t) * tet[j][a] + t * tet[i][a];
-      }
-    }
+  using Pair = std::array<std::size_t, 2>;
+  static constexpr std::array<Pair, 6> drawn_order{{{1, 0}, {2, 0}, {2, 1}, {3, 0}, {3, 1}, {3, 2}}};
+  static constexpr std::array<Pair, 3> after_corner0{{{2, 1}, {3, 1}, {3, 2}}};
+  if (keep_apart) {
+    if (auto why = fix_paths_from_corner0(s, src, corners, fixed, pos); !why.empty()) return why;
+  }
+  for (const auto& [j, i] : keep_apart ? std::span<const Pair>(after_corner0) : std::span<const Pair>(drawn_order)) {
+    const auto path = shortest_path(s, src, fixed, corners[j], corners[i], keep_apart);
+    if (path.empty())
+      return text("no free boundary path between corners ", s.vertices[corners[j]], " and ", s.vertices[corners[i]]);
+    place_on_edge(path, j, i, fixed, pos);
+  }
   return "";
 }
 
@@ -505,10 +634,11 @@ GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::ve
   std::string first_failure, last_failure;
   for (int attempt = 0; attempt < max_boundary_attempts; ++attempt) {
     std::mt19937_64 rng(mix(spec.seed + 0x9E3779B97F4A7C15ull * std::uint64_t(attempt + 1)));
-    const auto corners = choose_corners(s, spec.shape, rng);
+    const auto corners = choose_corners(s, src, spec, attempt, rng);
     std::vector<char> fixed;
     std::vector<Vec3> pos;
-    std::string why = fix_corner_paths(s, src, corners, fixed, pos);
+    const bool keep_apart = spec.corners == CornerChoice::farthest && spec.shape != BoundaryShape::stiff_tet;
+    std::string why = fix_corner_paths(s, src, corners, keep_apart, fixed, pos);
     if (why.empty()) why = place_and_check(mesh, s, src, fixed, spec, pos, g);
     g.attempts = attempt + 1;
     if (why.empty()) {

@@ -48,6 +48,19 @@ namespace cmx::generators {
 
 enum class BoundaryShape { tet, stiff_tet, sphere, star };
 
+// How step 1 picks the four corners. random: drawn (the construction above). farthest, for
+// shapes with a long tunnel or protrusion (Furch's knotted hole, fingers): on even attempts, the
+// two ends of the surface's longest stretch (from a drawn vertex, the vertex farthest from it
+// over the surface, then the one farthest from that; every other time with the two swapped)
+// become corners 0 and 1, and corners 2 and 3 are taken far out of the stretch (at least 3/4 as
+// far from corner 0 as corner 1, and over the surface less than 3/2 times as far from corner 1 as
+// in space); the three paths from corner 0 are found together, as vertex-disjoint paths of least
+// total length (generators/disjoint_paths.hpp), so they run side by side down the stretch and
+// space its vertices along three edges of the tetrahedron, where uniform Tutte weights would
+// crowd it exponentially into one face. Odd attempts draw the corners (and still find the paths
+// from corner 0 together). stiff-tet ignores the choice: its corners and paths are as drawn.
+enum class CornerChoice { random, farthest };
+
 struct BoundaryShapeSpec {
   BoundaryShape shape = BoundaryShape::tet;
   std::uint64_t seed = 1234;
@@ -57,6 +70,7 @@ struct BoundaryShapeSpec {
   // a long protrusion (a finger, a tunnel) exponentially along its length, to below what doubles
   // resolve; a few steps spread it over a fair share of the shape.
   int spread = 0;
+  CornerChoice corners = CornerChoice::random;
 };
 
 // Reads "tet", "stiff-tet", "sphere" or "star", each optionally followed by ":SEED" (a decimal
@@ -70,7 +84,7 @@ const char* shape_name(BoundaryShape shape);
 
 struct GeneratedBoundary {
   bool ok = false;
-  std::vector<std::uint32_t> vertices;          // boundary vertices, ascending
+  std::vector<std::uint32_t> vertices;           // boundary vertices, ascending
   std::vector<std::array<double, 3>> positions;  // one per entry of vertices
   int attempts = 0;                              // attempts made (the successful one included)
   std::string message;                           // why it failed (when !ok)
@@ -85,7 +99,8 @@ inline constexpr int max_boundary_attempts = 100;
 // ok = false with a message when `source` does not match the mesh or has a non-finite coordinate,
 // when the boundary is not a closed surface (an edge not in exactly two boundary faces) or has
 // fewer than 4 vertices, or when no attempt validates.
-GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::vector<std::array<double, 3>>& source,
+GeneratedBoundary generate_boundary(const topology::TetMesh& mesh,
+                                    const std::vector<std::array<double, 3>>& source,
                                     const BoundaryShapeSpec& spec);
 
 // Exact validity of generated (or any) boundary positions: every vertex of `boundary.vertices`

@@ -277,3 +277,28 @@ TEST_CASE("cmx boundary --spread: another valid boundary, the same bytes again")
   const auto info = run_cmx({"map", mesh, "--boundary", spread, "-o", fresh_path(""), "--quiet"});
   CHECK(info.exit_code == 0);
 }
+
+TEST_CASE("cmx boundary --corners farthest: a boundary where drawn corners find none") {
+  // Two fingers two cells wide and 80 long: drawn corners fail on every attempt (exit 4, no
+  // file); the ends of the longest stretch give a valid boundary, the same bytes again, which
+  // cmx map accepts and maps.
+  const auto mesh = generated_mesh("fingers:2,2,80");
+  const auto drawn = fresh_path(".txt"), far = fresh_path(".txt"), again = fresh_path(".txt");
+  const auto r = run_cmx({"boundary", mesh, "--shape", "sphere", "-o", drawn});
+  CHECK(r.exit_code == 4);
+  CHECK(r.err.find("no valid 'sphere' boundary") != std::string::npos);
+  CHECK_FALSE(fs::exists(drawn));
+  REQUIRE(run_cmx({"boundary", mesh, "--shape", "sphere", "--corners", "farthest", "-o", far}).exit_code == 0);
+  REQUIRE(run_cmx({"boundary", mesh, "--shape", "sphere", "--corners=farthest", "-o", again}).exit_code == 0);
+  CHECK(file_text(far) == file_text(again));
+  const auto radii = check_boundary_file(far, vtk_boundary_vertices(mesh));
+  for (double radius : radii) CHECK(radius == doctest::Approx(1).epsilon(1e-15));
+  const auto map = run_cmx({"map", mesh, "--boundary", far, "-o", fresh_path(""), "--quiet"});
+  INFO(map.err);
+  CHECK(map.exit_code == 0);
+  // A bad choice is a usage error naming the option.
+  const auto bad = run_cmx({"boundary", mesh, "--shape", "sphere", "--corners", "nearest", "-o", drawn});
+  CHECK(bad.exit_code == 2);
+  CHECK(bad.err.find("--corners") != std::string::npos);
+  CHECK_FALSE(fs::exists(drawn));
+}

@@ -349,3 +349,28 @@ TEST_CASE("spreading undoes the Tutte embedding's crowding of a long finger") {
     CHECK(spread_min > 1e6 * plain_min);
   }
 }
+
+TEST_CASE("farthest corners give boundaries where drawn corners wall their paths off") {
+  // Two fingers of 2 x 2 cells and length 80: drawn corners land on different fingers or far
+  // down one, and the paths found one after another block each other in a finger only two
+  // vertices wide, on every one of the 100 attempts. Corners at the ends of the longest stretch,
+  // with the three paths from corner 0 found together, succeed; the result is checked like every
+  // shape (exact, star-shaped, deterministic).
+  const auto hand = alg::thin_fingers(2, 2, 80, 0, 0.0);
+  const Positions source = hand.double_positions();
+  REQUIRE(cmx::topology::check_ball(hand.mesh).ok);
+  const auto drawn = alg::generate_boundary(hand.mesh, source, BoundaryShapeSpec{BoundaryShape::tet, 1234});
+  CHECK_FALSE(drawn.ok);
+  CHECK(drawn.message.find("no free boundary path") != std::string::npos);
+  for (auto shape : {BoundaryShape::tet, BoundaryShape::sphere, BoundaryShape::star}) {
+    BoundaryShapeSpec spec{shape, 1234};
+    spec.corners = alg::CornerChoice::farthest;
+    check_shape(hand.mesh, source, spec);
+  }
+  // stiff-tet draws its corners whatever the choice: the same boundary either way.
+  BoundaryShapeSpec stiff{BoundaryShape::stiff_tet, 1234};
+  const auto a = check_shape(hand.mesh, source, stiff);
+  stiff.corners = alg::CornerChoice::farthest;
+  const auto b = check_shape(hand.mesh, source, stiff);
+  CHECK(a.positions == b.positions);
+}
