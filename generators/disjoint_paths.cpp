@@ -15,7 +15,7 @@ using Graph = boost::adjacency_list<
     boost::property<boost::edge_capacity_t, long,
                     boost::property<boost::edge_residual_capacity_t, long,
                                     boost::property<boost::edge_reverse_t, Traits::edge_descriptor,
-                                                    boost::property<boost::edge_weight_t, long>>>>>;
+                                                    boost::property<boost::edge_weight_t, double>>>>>;
 
 // The flow network: each vertex v split into in(v) = 2v and out(v) = 2v + 1 joined by an arc of
 // capacity 1, so that at most one path passes through it; each edge {u, v} becomes the arcs
@@ -25,7 +25,7 @@ class Network {
  public:
   explicit Network(std::size_t vertices) : g_(2 * vertices + 1), sink_(2 * vertices) {}
 
-  void add_arc(std::size_t a, std::size_t b, long cost) {
+  void add_arc(std::size_t a, std::size_t b, double cost) {
     const auto forward = boost::add_edge(a, b, g_).first;
     const auto backward = boost::add_edge(b, a, g_).first;
     boost::put(boost::edge_capacity, g_, forward, 1L);
@@ -73,13 +73,16 @@ std::vector<std::vector<std::uint32_t>> disjoint_paths(
     if (v != from && !is_target[v] && !blocked[v]) net.add_arc(Network::in(v), Network::out(v), 0);
     if (is_target[v]) net.add_arc(Network::in(v), net.sink(), 0);
   }
-  // Integer costs: the lengths scaled to 1 .. 2^20. With floating costs, the potentials' reduced
-  // costs round to tiny negative values, which the shortest-path step refuses.
+  // Integer-valued costs: the lengths scaled to 1 .. 2^20, so that every sum of potentials is exact
+  // (with fractional costs the reduced costs round to tiny negative values, which the
+  // shortest-path step refuses). They are stored as doubles all the same: the solver adds its
+  // "unreached" distance (the type's maximum) to itself for vertices no path reaches, which
+  // overflows a signed integer (undefined behaviour) but is a plain infinity in a double.
   std::vector<std::vector<double>> lengths(n);
   double longest = 0;
   for (std::uint32_t u = 0; u < n; ++u)
     for (auto v : neighbors[u]) longest = std::max(longest, lengths[u].emplace_back(length(u, v)));
-  const auto cost = [&](double l) { return 1 + std::lround(l / longest * 0x1p20); };
+  const auto cost = [&](double l) { return 1 + std::round(l / longest * 0x1p20); };
   for (std::uint32_t u = 0; u < n; ++u) {
     if (u != from && (is_target[u] || blocked[u])) continue;  // no path leaves a target or a blocked vertex
     for (std::size_t k = 0; k < neighbors[u].size(); ++k) {
