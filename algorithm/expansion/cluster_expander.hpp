@@ -67,6 +67,9 @@ class ClusterExpander {
 
   void classify_marked();  // evaluate() every vertex the queue has marked
   bool runaway();          // keeps the checkpoint; true when the cluster passed the runaway bound
+  void note_progress();    // a new smallest cluster of this attempt
+  bool stalled() const;    // too many expansions since the smallest cluster (stall_bound)
+  ExpansionOutcome stall() const;
   std::optional<ExpansionOutcome> check_limits() const;
   ExpansionOutcome stuck() const;
   void report_progress(bool final);
@@ -161,6 +164,9 @@ class ClusterExpander {
   VertexProperty<char> guess_wrong_;  // 1: the float guess of v's cone was wrong once; decide exactly
   std::unordered_map<VertexId, int> inflations_, relaxed_moves_;
   std::size_t cluster_ = 0, expanded_ = 0, failures_ = 0, max_bits_ = 0;
+  // The smallest cluster of this attempt and the expansion count when it was reached: an
+  // attempt whose expansions stop making the cluster smaller is stalled (runaway()).
+  std::size_t least_cluster_ = SIZE_MAX, expanded_at_least_ = 0;
   bool aggressive_ = false;
   std::vector<VertexId> recent_;  // expanded since the last smoothing
   std::size_t next_smooth_ = 0;

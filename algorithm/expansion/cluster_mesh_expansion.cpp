@@ -72,11 +72,15 @@ ExpansionOutcome ClusterExpander::run() {
       next_smooth_ = expanded_ + s_.smooth_every;
     }
     classify_marked();
+    note_progress();
     if (runaway()) {
       ExpansionOutcome out{MapOutcome::stuck, "the cluster ran away", false};
       out.runaway = true;
       return out;
     }
+    // The last attempt (no restart left) ends where the others would have restarted on a stall:
+    // going on only expands what the refinement pushes while the bits grow (runaway()).
+    if (s_.max_restarts > 0 && !watch_runaway_ && stalled()) return stall();
   }
   report_progress(true);
   return {MapOutcome::success, {}};
