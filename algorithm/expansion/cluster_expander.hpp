@@ -70,6 +70,7 @@ class ClusterExpander {
   void note_progress();    // a new smallest cluster of this attempt
   bool stalled() const;    // too many expansions since the smallest cluster (stall_bound)
   ExpansionOutcome stall() const;
+  std::optional<ExpansionOutcome> nobuenoss_ahead() const;  // a stall no other order escapes
   std::optional<ExpansionOutcome> check_limits() const;
   ExpansionOutcome stuck() const;
   void report_progress(bool final);

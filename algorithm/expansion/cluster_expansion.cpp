@@ -11,6 +11,7 @@
 #include "algorithm/verify/invariants.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
+#include "topology/topological_expansion.hpp"
 
 namespace cmx::algorithm {
 
@@ -35,12 +36,32 @@ void ClusterExpander::note_progress() {
 bool ClusterExpander::stalled() const { return expanded_ - expanded_at_least_ > stall_bound(least_cluster_); }
 
 ExpansionOutcome ClusterExpander::stall() const {
-  return {MapOutcome::stuck,
-          "stalled: " + std::to_string(cluster_) + " cluster vertices left; the last " +
-              std::to_string(expanded_ - expanded_at_least_) +
-              " expansions never left fewer than " +
-              std::to_string(least_cluster_) + ", in the default order and after " +
-              std::to_string(s_.max_restarts) + " restarts in others"};
+  return {MapOutcome::stuck, "stalled: " + std::to_string(cluster_) + " cluster vertices left; the last " +
+                                 std::to_string(expanded_ - expanded_at_least_) +
+                                 " expansions never left fewer than " + std::to_string(least_cluster_) +
+                                 " (after " + std::to_string(stats_.expansion_restarts) +
+                                 " restarts in other orders)"};
+}
+
+// A stall where greedy expansion cannot finish whatever the geometry: topological expansion
+// (Eq. (1) alone, topology/topological_expansion.hpp) from the cluster mesh left stops at a
+// NOBUENOSS in the default order and in random:1..3. Then no restart in another order is tried
+// (the input's own cluster mesh is a trap for every order on Furch's knotted hole) and the run
+// ends as a NOBUENOSS, which the shelling search of the fallback then examines (map.cpp).
+std::optional<ExpansionOutcome> ClusterExpander::nobuenoss_ahead() const {
+  std::size_t fewest = SIZE_MAX;
+  for (std::uint64_t k = 0; k < 4; ++k) {
+    const topology::ExpansionOrder order =
+        k == 0 ? topology::ExpansionOrder{} : topology::ExpansionOrder{topology::ExpansionOrderKind::random, k};
+    const topology::TopologicalExpansionResult t = topology::topological_expansion(e_.mesh, order, e_.unexpanded);
+    if (!t.stuck) return std::nullopt;
+    fewest = std::min(fewest, t.remaining.size());
+  }
+  ExpansionOutcome out = stall();
+  out.message += "; NOBUENOSS ahead: topological expansion from the cluster mesh left stops at one in the default "
+                 "order and random:1..3 (" + std::to_string(fewest) + " or more cluster vertices left)";
+  out.nobuenoss = true;
+  return out;
 }
 
 bool ClusterExpander::runaway() {

@@ -76,8 +76,10 @@ struct ExpansionOutcome {
 // vertices it pushed itself while the bits grow, up to the time limit), it goes back to the copy
 // and continues with the tie-breaks of random:K (K = 1, 2, ...), at most max_restarts times;
 // after that it runs on without the bounds, except that a stall then ends the run as `stuck`
-// with the figures. An attempt that did not halve the cluster goes back to the state before the
-// first expansion instead (a copy that no order could halve again may be a trap).
+// with the figures. A stall where topological expansion from the cluster mesh left meets a
+// NOBUENOSS in four orders ends the run at once, as a NOBUENOSS (nobuenoss_ahead). An attempt
+// that did not halve the cluster goes back to the state before the first expansion instead (a
+// copy that no order could halve again may be a trap).
 // A heuristic: it does not make the expansion's success certain (issue 21 point 1 asks for a
 // star-shapification that is), and the output stays deterministic (the restarts are too).
 

@@ -73,14 +73,18 @@ ExpansionOutcome ClusterExpander::run() {
     }
     classify_marked();
     note_progress();
+    // A stall (runaway()) ahead of a NOBUENOSS ends the run; the last attempt (no restart left)
+    // ends at any stall, where the others restart: going on only expands what the refinement
+    // pushes while the bits grow.
+    if (s_.max_restarts > 0 && stalled()) {
+      if (auto doomed = nobuenoss_ahead()) return *doomed;
+      if (!watch_runaway_) return stall();
+    }
     if (runaway()) {
       ExpansionOutcome out{MapOutcome::stuck, "the cluster ran away", false};
       out.runaway = true;
       return out;
     }
-    // The last attempt (no restart left) ends where the others would have restarted on a stall:
-    // going on only expands what the refinement pushes while the bits grow (runaway()).
-    if (s_.max_restarts > 0 && !watch_runaway_ && stalled()) return stall();
   }
   report_progress(true);
   return {MapOutcome::success, {}};
