@@ -126,9 +126,10 @@ GeneratedDomain bings_house(std::uint32_t scale, std::uint64_t perturb_seed, dou
   return d;
 }
 
-GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude) {
+GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude, std::uint32_t scale) {
+  if (scale < 1 || scale > 5) throw std::invalid_argument("knotted_hole: the scale must be 1 to 5");
   check_amplitude(amplitude, "knotted_hole");
-  GeneratedDomain d = from_grid(topology::knotted_hole_ball(), 0);
+  GeneratedDomain d = from_grid(topology::knotted_hole_ball(scale), 0);
   perturb(d, perturb_seed, amplitude);
   return d;
 }

@@ -66,7 +66,10 @@ inline constexpr double default_perturb_amplitude = 0.25;
 // scale: even, >= 4 (std::invalid_argument otherwise).
 [[nodiscard]] GeneratedDomain bings_house(std::uint32_t scale, std::uint64_t perturb_seed,
                                           double amplitude = default_perturb_amplitude);
-[[nodiscard]] GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude = default_perturb_amplitude);
+// scale: cells per lattice unit, 1 to 5 (std::invalid_argument otherwise): the same solid meshed
+// scale^3 times more finely.
+[[nodiscard]] GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude = default_perturb_amplitude,
+                                           std::uint32_t scale = 1);
 // fingers in [1, 16], width in [2, 8], length in [1, 400] (std::invalid_argument otherwise).
 [[nodiscard]] GeneratedDomain thin_fingers(std::uint32_t fingers, std::uint32_t width, std::uint32_t length,
                                            std::uint64_t perturb_seed, double amplitude = default_perturb_amplitude);

@@ -41,7 +41,8 @@ constexpr std::array<std::int32_t, 3> circle_arc[] = {
 
 }  // namespace
 
-GridComplex ball_with_hole(std::span<const std::array<std::int32_t, 3>> corners, std::int32_t margin) {
+GridComplex ball_with_hole(std::span<const std::array<std::int32_t, 3>> corners, std::int32_t margin,
+                           std::uint32_t scale) {
   if (corners.empty()) return grid_complex(1, 1, 1);
   // The tunnel as a list of lattice cells.
   std::vector<std::array<std::int32_t, 3>> cells{corners[0]};
@@ -71,12 +72,21 @@ GridComplex ball_with_hole(std::span<const std::array<std::int32_t, 3>> corners,
                k = static_cast<std::size_t>(c[2] - origin[2]);
     keep[i + nx * (j + ny * k)] = 0;
   }
-  return voxel_complex(nx, ny, nz, keep);
+  if (scale <= 1) return voxel_complex(nx, ny, nz, keep);
+  // A finer mesh of the same solid: fine cell (i, j, k) is kept when the cell containing it is.
+  const std::uint32_t fx = nx * scale, fy = ny * scale, fz = nz * scale;
+  std::vector<char> fine(std::size_t{fx} * fy * fz);
+  for (std::uint32_t k = 0; k < fz; ++k)
+    for (std::uint32_t j = 0; j < fy; ++j)
+      for (std::uint32_t i = 0; i < fx; ++i)
+        fine[i + std::size_t{fx} * (j + std::size_t{fy} * k)] =
+            keep[i / scale + std::size_t{nx} * (j / scale + std::size_t{ny} * (k / scale))];
+  return voxel_complex(fx, fy, fz, fine);
 }
 
-GridComplex knotted_hole_ball() { return ball_with_hole(trefoil_arc); }
+GridComplex knotted_hole_ball(std::uint32_t scale) { return ball_with_hole(trefoil_arc, 2, scale); }
 
-GridComplex unknotted_hole_ball() { return ball_with_hole(circle_arc); }
+GridComplex unknotted_hole_ball(std::uint32_t scale) { return ball_with_hole(circle_arc, 2, scale); }
 
 namespace {
 

@@ -17,16 +17,18 @@ namespace cmx::topology {
 // the top face, runs down and then follows a trefoil-knotted lattice arc, and stops inside
 // (so the solid is still a ball). The interior vertices form a (subdivided) knotted hole too;
 // greedy topological expansion erodes it down to a NOBUENOSS and reports stuck, in every
-// order we tried (59286 tets, 7944 interior vertices).
-[[nodiscard]] GridComplex knotted_hole_ball();
+// order we tried (59286 tets, 7944 interior vertices). `scale` cells per lattice unit (1 to 5)
+// meshes the same solid more finely (scale^3 times the tets): the tunnel is scale cells wide.
+[[nodiscard]] GridComplex knotted_hole_ball(std::uint32_t scale = 1);
 // Control: the same construction along an unknotted arc of similar length; expansion completes.
-[[nodiscard]] GridComplex unknotted_hole_ball();
+[[nodiscard]] GridComplex unknotted_hole_ball(std::uint32_t scale = 1);
 // The construction for any axis-aligned lattice arc: `corners` are the turning points (each
 // consecutive pair differing in one coordinate); the tunnel also runs straight up (+z) from the
 // first corner through the top face. The box is the arc's bounding box grown by `margin`
 // cells (the top face is `margin`+1 above the arc). Not a ball if the tunnel touches itself.
+// Each cell of that construction is then cut into scale^3 cells.
 [[nodiscard]] GridComplex ball_with_hole(std::span<const std::array<std::int32_t, 3>> corners,
-                                         std::int32_t margin = 2);
+                                         std::int32_t margin = 2, std::uint32_t scale = 1);
 
 // Bing's house with two rooms, thickened: a voxel ball whose interior vertices induce exactly
 // Bing's house, a contractible 2-complex in which every edge lies in >= 2 triangles (so no
