@@ -25,7 +25,7 @@ void ClusterExpander::classify_marked() {
 // refinement then only expands the vertices it pushed itself (Furch's knotted hole on a tet:
 // from 1,960 cluster vertices on, 7,000 expansions of pushed vertices, none of an input vertex,
 // while the bits grow from 71 to 2,800 and the run meets the time limit).
-static std::size_t stall_bound(std::size_t least_cluster) { return 1024 + least_cluster / 4; }
+static std::size_t stall_bound(std::size_t least_cluster) { return 512 + least_cluster / 8; }
 
 void ClusterExpander::note_progress() {
   if (cluster_ >= least_cluster_) return;
