@@ -67,6 +67,7 @@ class ClusterExpander {
 
   void classify_marked();  // evaluate() every vertex the queue has marked
   bool runaway();          // keeps the checkpoint; true when the cluster passed the runaway bound
+  static ExpansionOutcome ran_away();  // the outcome that makes expand_cluster restart
   void note_progress();    // a new smallest cluster of this attempt
   bool stalled() const;    // too many expansions since the smallest cluster (stall_bound)
   ExpansionOutcome stall() const;
@@ -166,7 +167,7 @@ class ClusterExpander {
   std::unordered_map<VertexId, int> inflations_, relaxed_moves_;
   std::size_t cluster_ = 0, expanded_ = 0, failures_ = 0, max_bits_ = 0;
   // The smallest cluster of this attempt and the expansion count when it was reached: an
-  // attempt whose expansions stop making the cluster smaller is stalled (runaway()).
+  // attempt whose expansions stop making the cluster smaller is stalled (stalled()).
   std::size_t least_cluster_ = SIZE_MAX, expanded_at_least_ = 0;
   bool aggressive_ = false;
   std::vector<VertexId> recent_;  // expanded since the last smoothing

@@ -72,7 +72,13 @@ bool ClusterExpander::runaway() {
     return false;
   }
   const std::size_t added = e_.num_vertices() - checkpoint_->embedding.num_vertices();
-  return cluster_ > 2 * checkpoint_->cluster + 64 || added > 16 * checkpoint_->cluster + 1024 || stalled();
+  return cluster_ > 2 * checkpoint_->cluster + 64 || added > 16 * checkpoint_->cluster + 1024;
+}
+
+ExpansionOutcome ClusterExpander::ran_away() {
+  ExpansionOutcome out{MapOutcome::stuck, "the cluster ran away", false};
+  out.runaway = true;
+  return out;
 }
 
 std::optional<ExpansionOutcome> ClusterExpander::check_limits() const {

@@ -73,18 +73,14 @@ ExpansionOutcome ClusterExpander::run() {
     }
     classify_marked();
     note_progress();
-    // A stall (runaway()) ahead of a NOBUENOSS ends the run; the last attempt (no restart left)
-    // ends at any stall, where the others restart: going on only expands what the refinement
-    // pushes while the bits grow.
+    // A stall ahead of a NOBUENOSS ends the run; any other stall restarts like a runaway, or
+    // ends the last attempt (no restart left): going on only expands what the refinement pushes
+    // while the bits grow.
     if (s_.max_restarts > 0 && stalled()) {
       if (auto doomed = nobuenoss_ahead()) return *doomed;
-      if (!watch_runaway_) return stall();
+      return watch_runaway_ ? ran_away() : stall();
     }
-    if (runaway()) {
-      ExpansionOutcome out{MapOutcome::stuck, "the cluster ran away", false};
-      out.runaway = true;
-      return out;
-    }
+    if (runaway()) return ran_away();
   }
   report_progress(true);
   return {MapOutcome::success, {}};
