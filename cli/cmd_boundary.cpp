@@ -24,7 +24,7 @@
 #include "io/write_mesh.hpp"
 #include "topology/ball_check.hpp"
 
-namespace cmx::cli {
+namespace cmx::cli::boundary_command {
 namespace {
 
 const HelpText help = {
@@ -80,7 +80,8 @@ void add_options(CLI::App& app, BoundaryArgs& a) {
              "random (default: the tetrahedron's corners go to drawn boundary\n"
              "vertices) or farthest (to the ends of the longest protrusion or tunnel\n"
              "and two vertices far from both, so that its vertices are spaced along\n"
-             "edges instead of crowded into a face; stiff-tet always draws)")
+             "edges instead of crowded into a face; stiff-tet puts its corner 3 at\n"
+             "the inner end and corners 0, 1, 2 on a triangle at the outer end)")
       ->type_name("C");
 }
 
@@ -132,4 +133,4 @@ int run(const std::vector<std::string>& args) {
     register_command({"boundary", "generate star-shaped boundary positions (tet, stiff-tet, sphere, star)", &run});
 
 }  // namespace
-}  // namespace cmx::cli
+}  // namespace cmx::cli::boundary_command

@@ -414,13 +414,22 @@ std::uint32_t farthest_from(const Surface& s, const std::vector<Vec3>& src,
 // and, with a source, less than 3/2 as far from corner 1 over the surface as in space (a vertex
 // in a tunnel is much farther over the surface), the farthest from corner 1 and then from 1 and
 // 2 when `draw_rest` is false, drawn ones when it is true.
+// The two ends of the surface's longest stretch found from a drawn start: {inner, outer} (which
+// end is which is not known, so `swap_ends` swaps them).
+std::array<std::uint32_t, 2> stretch_ends(const Surface& s, const std::vector<Vec3>& src, bool swap_ends,
+                                          std::mt19937_64& rng) {
+  const auto start = static_cast<std::uint32_t>(draw_below(rng, s.vertices.size()));
+  std::array<std::uint32_t, 2> ends{};
+  ends[1] = farthest_from(s, src, std::span(&start, 1));
+  ends[0] = farthest_from(s, src, std::span(ends.data() + 1, 1));
+  if (swap_ends) std::swap(ends[0], ends[1]);
+  return ends;
+}
+
 std::array<std::uint32_t, 4> farthest_corners(const Surface& s, const std::vector<Vec3>& src, bool swap_ends,
                                               bool draw_rest, std::mt19937_64& rng) {
-  const auto start = static_cast<std::uint32_t>(draw_below(rng, s.vertices.size()));
-  std::array<std::uint32_t, 4> c{};
-  c[1] = farthest_from(s, src, std::span(&start, 1));
-  c[0] = farthest_from(s, src, std::span(c.data() + 1, 1));
-  if (swap_ends) std::swap(c[0], c[1]);
+  const auto ends = stretch_ends(s, src, swap_ends, rng);
+  std::array<std::uint32_t, 4> c{ends[0], ends[1], 0, 0};
   const auto from0 = distances_from(s, src, std::span(c.data(), 1));
   const auto from1 = distances_from(s, src, std::span(c.data() + 1, 1));
   std::vector<char> far_out(from0.size(), 0);
@@ -441,6 +450,17 @@ std::array<std::uint32_t, 4> farthest_corners(const Surface& s, const std::vecto
   return c;
 }
 
+// stiff-tet with CornerChoice::farthest: corner 3, from which the three paths leave together, at
+// the inner end of the longest stretch, and corners 0, 1, 2 on a boundary triangle at its outer
+// end (the first one listed there).
+std::array<std::uint32_t, 4> farthest_stiff_corners(const Surface& s, const std::vector<Vec3>& src, bool swap_ends,
+                                                    std::mt19937_64& rng) {
+  const auto ends = stretch_ends(s, src, swap_ends, rng);
+  for (const auto& f : s.faces)
+    if (std::find(f.begin(), f.end(), ends[1]) != f.end()) return {f[0], f[1], f[2], ends[0]};
+  return {ends[0], ends[0], ends[0], ends[0]};  // not distinct: the caller draws instead
+}
+
 // Four distinct corners (local ids) for attempt `rng`.
 // CornerChoice::farthest alternates: farthest corners on even attempts (from different drawn
 // starts, which often lead to the same corners; every other time with the ends swapped), drawn
@@ -449,8 +469,9 @@ std::array<std::uint32_t, 4> choose_corners(const Surface& s, const std::vector<
                                             const BoundaryShapeSpec& spec, int attempt,
                                             std::mt19937_64& rng) {
   const BoundaryShape shape = spec.shape;
-  if (spec.corners == CornerChoice::farthest && shape != BoundaryShape::stiff_tet && attempt % 2 == 0) {
-    const auto c = farthest_corners(s, src, attempt % 4 == 2, attempt >= 4, rng);
+  if (spec.corners == CornerChoice::farthest && attempt % 2 == 0) {
+    const auto c = shape == BoundaryShape::stiff_tet ? farthest_stiff_corners(s, src, attempt % 4 == 2, rng)
+                                                     : farthest_corners(s, src, attempt % 4 == 2, attempt >= 4, rng);
     if (std::set<std::uint32_t>(c.begin(), c.end()).size() == 4) return c;
   }
   std::array<std::uint32_t, 4> c{};
@@ -480,28 +501,34 @@ void place_on_edge(const std::vector<std::uint32_t>& path, std::size_t a, std::s
   }
 }
 
-// Farthest corners: the three paths from corner 0 (the inner end of a tunnel or protrusion)
-// together, as disjoint paths of least total length, which exist on every triangulated sphere;
-// one after another, the first two shortest paths down a narrow tunnel can leave the third no
-// way in.
-std::string fix_paths_from_corner0(const Surface& s, const std::vector<Vec3>& src,
-                                   const std::array<std::uint32_t, 4>& corners, std::vector<char>& fixed,
-                                   std::vector<Vec3>& pos) {
+// Farthest corners: the three paths from the hub corner (the inner end of a tunnel or protrusion:
+// corner 0, or corner 3 for stiff-tet) together, as disjoint paths of least total length, which
+// exist on every triangulated sphere; one after another, the first two shortest paths down a
+// narrow tunnel can leave the third no way in.
+std::string fix_paths_from_hub(const Surface& s, const std::vector<Vec3>& src, const std::array<std::uint32_t, 4>& corners,
+                               std::size_t hub, std::vector<char>& fixed, std::vector<Vec3>& pos) {
   const auto length = [&](std::uint32_t u, std::uint32_t v) { return src.empty() ? 1.0 : norm(sub(src[u], src[v])); };
   const std::vector<char> none(s.vertices.size(), 0);
-  const auto paths = disjoint_paths(s.neighbors, length, corners[0], std::span(corners).subspan(1), none);
-  if (paths.empty()) return text("no three disjoint boundary paths from corner ", s.vertices[corners[0]]);
-  for (std::size_t j = 1; j < 4; ++j) place_on_edge(paths[j - 1], 0, j, fixed, pos);
+  std::array<std::size_t, 3> others{};
+  std::array<std::uint32_t, 3> targets{};
+  for (std::size_t j = 0, k = 0; j < 4; ++j)
+    if (j != hub) {
+      others[k] = j;
+      targets[k++] = corners[j];
+    }
+  const auto paths = disjoint_paths(s.neighbors, length, corners[hub], targets, none);
+  if (paths.empty()) return text("no three disjoint boundary paths from corner ", s.vertices[corners[hub]]);
+  for (std::size_t k = 0; k < 3; ++k) place_on_edge(paths[k], hub, others[k], fixed, pos);
   return "";
 }
 
 // Steps 1 and 2 of the construction: the corners go to the tetrahedron's corners, the paths
 // between them to its edges; marks them fixed. "" or why it failed. Drawn corners: the paths
 // one after another, 1-0, 2-0, 2-1, 3-0, 3-1, 3-2. Farthest corners (keep_apart): the three
-// into corner 0 first (fix_paths_from_corner0), then 2-1, 3-1 and 3-2, each of which cuts a
-// face off the disc that remains.
+// into the hub corner first (fix_paths_from_hub: corner 0, or 3 for stiff-tet), then the other
+// three, each of which cuts a face off the disc that remains.
 std::string fix_corner_paths(const Surface& s, const std::vector<Vec3>& src, const std::array<std::uint32_t, 4>& corners,
-                             bool keep_apart, std::vector<char>& fixed, std::vector<Vec3>& pos) {
+                             bool keep_apart, bool stiff, std::vector<char>& fixed, std::vector<Vec3>& pos) {
   const auto& tet = tet_corners();
   const std::size_t n = s.vertices.size();
   fixed.assign(n, 0);
@@ -512,11 +539,15 @@ std::string fix_corner_paths(const Surface& s, const std::vector<Vec3>& src, con
   }
   using Pair = std::array<std::size_t, 2>;
   static constexpr std::array<Pair, 6> drawn_order{{{1, 0}, {2, 0}, {2, 1}, {3, 0}, {3, 1}, {3, 2}}};
-  static constexpr std::array<Pair, 3> after_corner0{{{2, 1}, {3, 1}, {3, 2}}};
+  static constexpr std::array<Pair, 3> after_hub0{{{2, 1}, {3, 1}, {3, 2}}};
+  static constexpr std::array<Pair, 3> after_hub3{{{1, 0}, {2, 0}, {2, 1}}};
   if (keep_apart) {
-    if (auto why = fix_paths_from_corner0(s, src, corners, fixed, pos); !why.empty()) return why;
+    if (auto why = fix_paths_from_hub(s, src, corners, stiff ? 3 : 0, fixed, pos); !why.empty()) return why;
   }
-  for (const auto& [j, i] : keep_apart ? std::span<const Pair>(after_corner0) : std::span<const Pair>(drawn_order)) {
+  const std::span<const Pair> order = !keep_apart ? std::span<const Pair>(drawn_order)
+                                      : stiff     ? std::span<const Pair>(after_hub3)
+                                                  : std::span<const Pair>(after_hub0);
+  for (const auto& [j, i] : order) {
     const auto path = shortest_path(s, src, fixed, corners[j], corners[i], keep_apart);
     if (path.empty())
       return text("no free boundary path between corners ", s.vertices[corners[j]], " and ", s.vertices[corners[i]]);
@@ -637,8 +668,8 @@ GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::ve
     const auto corners = choose_corners(s, src, spec, attempt, rng);
     std::vector<char> fixed;
     std::vector<Vec3> pos;
-    const bool keep_apart = spec.corners == CornerChoice::farthest && spec.shape != BoundaryShape::stiff_tet;
-    std::string why = fix_corner_paths(s, src, corners, keep_apart, fixed, pos);
+    const bool keep_apart = spec.corners == CornerChoice::farthest;
+    std::string why = fix_corner_paths(s, src, corners, keep_apart, spec.shape == BoundaryShape::stiff_tet, fixed, pos);
     if (why.empty()) why = place_and_check(mesh, s, src, fixed, spec, pos, g);
     g.attempts = attempt + 1;
     if (why.empty()) {

@@ -58,7 +58,9 @@ enum class BoundaryShape { tet, stiff_tet, sphere, star };
 // total length (generators/disjoint_paths.hpp), so they run side by side down the stretch and
 // space its vertices along three edges of the tetrahedron, where uniform Tutte weights would
 // crowd it exponentially into one face. Odd attempts draw the corners (and still find the paths
-// from corner 0 together). stiff-tet ignores the choice: its corners and paths are as drawn.
+// from corner 0 together). stiff-tet keeps its triangle of corners 0, 1, 2: with farthest, on
+// even attempts that triangle is one at the outer end of the stretch and corner 3 its inner end,
+// and on every attempt the three paths from corner 3 are found together.
 enum class CornerChoice { random, farthest };
 
 struct BoundaryShapeSpec {
