@@ -16,6 +16,7 @@
 #include "algorithm/verify/output_statistics.hpp"
 #include "algorithm/problem/preprocess.hpp"
 #include "algorithm/refinement/shelling_fallback.hpp"
+#include "algorithm/run_control.hpp"
 #include "algorithm/problem/validate_problem.hpp"
 #include "algorithm/verify/verify_map.hpp"
 #include "algorithm/tuning.hpp"
@@ -44,8 +45,6 @@ SnapPolicy applied_snap_policy(const MapOptions& options) {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 double boundary_extent(const std::vector<HPoint>& points) {
   if (points.empty()) return 0;

@@ -58,4 +58,9 @@ class RunControl {
   bool stopped_ = false;
 };
 
+// Seconds of wall time since `start` on the run's clock: the figures of MapStatistics::seconds.
+inline double seconds_since(RunControl::Clock::time_point start) {
+  return std::chrono::duration<double>(RunControl::Clock::now() - start).count();
+}
+
 }  // namespace cmx::algorithm

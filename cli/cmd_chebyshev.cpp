@@ -24,6 +24,7 @@
 #include "cli/command.hpp"
 #include "cli/command_line.hpp"
 #include "cli/common_options.hpp"
+#include "cli/reference_backends/reference_backends.hpp"
 #include "cli/files.hpp"
 #include "cli/json.hpp"
 #include "cli/messages.hpp"
@@ -33,7 +34,7 @@
 #include "lp/backend_registry.hpp"
 #include "lp/chebyshev_center.hpp"
 
-namespace cmx::cli {
+namespace cmx::cli::chebyshev_command {
 namespace {
 
 const HelpText help = {
@@ -125,4 +126,4 @@ int run(const std::vector<std::string>& args) {
     {"chebyshev", "exact Chebyshev centre of half-spaces (lines 'a b c d': ax+by+cz <= d)", &run});
 
 }  // namespace
-}  // namespace cmx::cli
+}  // namespace cmx::cli::chebyshev_command

@@ -15,7 +15,7 @@
 #include "io/read_mesh.hpp"
 #include "io/write_mesh.hpp"
 
-namespace cmx::cli {
+namespace cmx::cli::convert_command {
 namespace {
 
 const HelpText help = {
@@ -65,4 +65,4 @@ int run(const std::vector<std::string>& args) {
 [[maybe_unused]] const bool registered = register_command({"convert", "convert a tet mesh between file formats", &run});
 
 }  // namespace
-}  // namespace cmx::cli
+}  // namespace cmx::cli::convert_command

@@ -27,7 +27,7 @@
 #include "cli/option_values.hpp"
 #include "io/write_mesh.hpp"
 
-namespace cmx::cli {
+namespace cmx::cli::generate_mesh_command {
 namespace {
 
 const HelpText help = {
@@ -169,4 +169,4 @@ int run(const std::vector<std::string>& args) {
     register_command({"generate-mesh", "write a test mesh: perturbed grid, voxel ball or thin slab", &run});
 
 }  // namespace
-}  // namespace cmx::cli
+}  // namespace cmx::cli::generate_mesh_command

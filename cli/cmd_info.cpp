@@ -27,7 +27,7 @@
 #include "topology/coherent_orientation.hpp"
 #include "topology/union_find.hpp"
 
-namespace cmx::cli {
+namespace cmx::cli::info_command {
 using topology::UnionFind;
 namespace {
 
@@ -357,4 +357,4 @@ int run(const std::vector<std::string>& args) {
     register_command({"info", "counts, Euler characteristics, ball and orientation verdicts of a mesh file", &run});
 
 }  // namespace
-}  // namespace cmx::cli
+}  // namespace cmx::cli::info_command

@@ -16,7 +16,6 @@
 #include "arith/rational.hpp"
 #include "cmx/map.hpp"
 #include "cli/command.hpp"
-#include "cli/common_options.hpp"
 #include "cli/files.hpp"
 #include "cli/map_args.hpp"
 #include "cli/map_input.hpp"
@@ -24,13 +23,14 @@
 #include "cli/mesh_input.hpp"
 #include "cli/messages.hpp"
 #include "cli/progress_line.hpp"
+#include "cli/reference_backends/reference_backends.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
 #include "io/map_fields.hpp"
 #include "io/tmap.hpp"
 #include "io/write_mesh.hpp"
 
-namespace cmx::cli {
+namespace cmx::cli::map_command {
 namespace {
 
 // Where the map goes: OUT's stem and the formats to write (tmap always).
@@ -371,4 +371,4 @@ int run(const std::vector<std::string>& args) {
 const bool registered = register_command({"map", "map a ball-topology tet mesh onto a star-shaped domain (exact)", run});
 
 }  // namespace
-}  // namespace cmx::cli
+}  // namespace cmx::cli::map_command

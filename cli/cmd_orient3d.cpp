@@ -24,7 +24,7 @@
 #include "cli/number_lines.hpp"
 #include "kernel/orient.hpp"
 
-namespace cmx::cli {
+namespace cmx::cli::orient3d_command {
 namespace {
 
 const HelpText help = {
@@ -106,4 +106,4 @@ int run(const std::vector<std::string>& args) {
     register_command({"orient3d", "exact orientation signs of point quadruples (lines of 12 numbers)", &run});
 
 }  // namespace
-}  // namespace cmx::cli
+}  // namespace cmx::cli::orient3d_command

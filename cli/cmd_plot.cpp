@@ -18,7 +18,7 @@
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
 
-namespace cmx::cli {
+namespace cmx::cli::plot_command {
 namespace {
 
 const HelpText help = {
@@ -121,4 +121,4 @@ int run(const std::vector<std::string>& args) {
 const bool registered = register_command({"plot", "draw a `cmx map --trace` file as an SVG chart", run});
 
 }  // namespace
-}  // namespace cmx::cli
+}  // namespace cmx::cli::plot_command

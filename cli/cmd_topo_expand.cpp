@@ -33,7 +33,7 @@
 #include "topology/nobuenoss.hpp"
 #include "topology/topological_expansion.hpp"
 
-namespace cmx::cli {
+namespace cmx::cli::topo_expand_command {
 namespace {
 
 using topology::TetMesh;
@@ -197,4 +197,4 @@ int run(const std::vector<std::string>& args) {
     {"topo-expand", "topological expansion by Eq. (1) of a mesh's interior (reports stuck)", &run});
 
 }  // namespace
-}  // namespace cmx::cli
+}  // namespace cmx::cli::topo_expand_command

@@ -18,8 +18,4 @@ CLI::Option* add_lp_option(CLI::App& app, std::string& into, const std::string& 
 // --norm l2-upper|l1
 CLI::Option* add_norm_option(CLI::App& app, lp::Norm& into, const std::string& description);
 
-// Registers the reference LP backends this program is linked with: none in `cmx`
-// (cli/reference_backends/none.cpp), GLPK in `cmx-glpk` (cli/reference_backends/glpk.cpp).
-void register_reference_backends();
-
 }  // namespace cmx::cli

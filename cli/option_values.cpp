@@ -10,7 +10,7 @@
 namespace cmx::cli {
 namespace {
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+std::string in_quotes(std::string_view text) { return "'" + std::string(text) + "'"; }
 
 std::string joined(const std::vector<std::string>& items) {
   std::string out;
@@ -37,7 +37,7 @@ std::uint64_t parse_integer(std::string_view text, std::uint64_t min, std::uint6
   const bool whole = !text.empty() && ec == std::errc() && end == text.data() + text.size();
   if (!whole || value < min || value > max)
     throw std::invalid_argument("needs an integer from " + std::to_string(min) + " to " + std::to_string(max) + ", not " +
-                                quoted(text));
+                                in_quotes(text));
   return value;
 }
 
@@ -46,13 +46,13 @@ std::uint64_t parse_seed(std::string_view text) { return parse_integer(text, 0, 
 double parse_time_limit(std::string_view text) {
   const auto x = whole_double(text);
   if (!x || !(*x > 0))
-    throw std::invalid_argument("needs a positive number of seconds (or inf: no limit), not " + quoted(text));
+    throw std::invalid_argument("needs a positive number of seconds (or inf: no limit), not " + in_quotes(text));
   return std::isinf(*x) ? 0 : *x;
 }
 
 double parse_nonnegative(std::string_view text) {
   const auto x = whole_double(text);
-  if (!x || !std::isfinite(*x) || *x < 0) throw std::invalid_argument("needs a finite number >= 0, not " + quoted(text));
+  if (!x || !std::isfinite(*x) || *x < 0) throw std::invalid_argument("needs a finite number >= 0, not " + in_quotes(text));
   return *x;
 }
 
@@ -64,7 +64,7 @@ std::vector<std::string> parse_list(std::string_view text, const std::vector<std
     start = comma + 1;
     if (item.empty()) continue;
     if (std::find(known.begin(), known.end(), item) == known.end())
-      throw std::invalid_argument("unknown " + what + " " + quoted(item) + " (known: " + joined(known) + ")");
+      throw std::invalid_argument("unknown " + what + " " + in_quotes(item) + " (known: " + joined(known) + ")");
     out.push_back(item);
   }
   return out;

@@ -7,8 +7,8 @@
 namespace cmx {
 
 namespace {
-constexpr long min_mpfr_bits = 2, max_mpfr_bits = 1000000;
-constexpr const char* valid_names = "cascade, interval, exact, naive or mpfr:BITS (BITS in 2..1000000)";
+constexpr long min_filter_bits = 2, max_filter_bits = 1000000;
+constexpr const char* valid_filter_names = "cascade, interval, exact, naive or mpfr:BITS (BITS in 2..1000000)";
 }  // namespace
 
 std::optional<FilterPolicy> parse_filter_policy(std::string_view name, std::string* why) {
@@ -18,12 +18,12 @@ std::optional<FilterPolicy> parse_filter_policy(std::string_view name, std::stri
   if (name == "exact") return FilterPolicy{K::exact, 0};
   if (name == "naive") return FilterPolicy{K::naive, 0};
   if (name.substr(0, 5) == "mpfr:") {
-    if (const auto bits = parse_bounded_integer(name.substr(5), min_mpfr_bits, max_mpfr_bits))
+    if (const auto bits = parse_bounded_integer(name.substr(5), min_filter_bits, max_filter_bits))
       return FilterPolicy{K::mpfr, std::int32_t(*bits)};
-    if (why) *why = "bad precision in filter '" + std::string(name) + "': expected " + valid_names;
+    if (why) *why = "bad precision in filter '" + std::string(name) + "': expected " + valid_filter_names;
     return std::nullopt;
   }
-  if (why) *why = "unknown filter '" + std::string(name) + "': expected " + valid_names;
+  if (why) *why = "unknown filter '" + std::string(name) + "': expected " + valid_filter_names;
   return std::nullopt;
 }
 

@@ -35,11 +35,11 @@ ChebyshevPassResult chebyshev_pass(Embedding& e, const PlacementOptions& options
   return r;
 }
 
-namespace {
-
 std::array<double, 3> nearest_double(const HPoint& p) {
   return {to_double(p.coordinate(0)), to_double(p.coordinate(1)), to_double(p.coordinate(2))};
 }
+
+namespace {
 
 // One pass over the tets with the doubles: how many they invert or flatten, and the interior
 // vertices of those tets, ascending (what the next repair round moves).

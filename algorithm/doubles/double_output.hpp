@@ -41,6 +41,9 @@ enum class SnapPolicy : std::uint8_t { none, nearest, chebyshev_pass, repair };
 std::optional<SnapPolicy> parse_snap_policy(std::string_view name);
 std::string_view to_string(SnapPolicy p);
 
+// The nearest doubles (round to nearest) of an exact position's three coordinates.
+std::array<double, 3> nearest_double(const HPoint& p);
+
 struct ChebyshevPassResult {
   std::size_t moved = 0;  // vertices whose exact position changed
   std::size_t lps = 0;

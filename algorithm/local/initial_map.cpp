@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "algorithm/run_control.hpp"
 #include "arith/rounding.hpp"
 
 namespace cmx::algorithm {
@@ -20,10 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr std::uint32_t not_interior = UINT32_MAX;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 InitialMap failed(std::string why, Clock::time_point start) {
   InitialMap out;

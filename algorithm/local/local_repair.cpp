@@ -10,7 +10,9 @@
 
 #include "algorithm/local/initial_map.hpp"
 #include "algorithm/local/stars.hpp"
+#include "algorithm/doubles/double_output.hpp"
 #include "algorithm/map_error.hpp"
+#include "algorithm/run_control.hpp"
 #include "algorithm/verify/output_statistics.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
@@ -25,7 +27,6 @@ using topology::TetId;
 using topology::Triangle;
 using topology::VertexId;
 
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 Point3 point_of(const HPoint& p) { return {p.coordinate(0), p.coordinate(1), p.coordinate(2)}; }
 
@@ -224,10 +225,6 @@ void stitch_star(const Star& star, const StarProblem& sp, const MapResult& rs, S
     for (VertexId& w : t) w = global[w];
     out.tets.push_back(t);
   }
-}
-
-std::array<double, 3> nearest_double(const HPoint& p) {
-  return {to_double(p.coordinate(0)), to_double(p.coordinate(1)), to_double(p.coordinate(2))};
 }
 
 // Tets outside the stars as they are, then each star's refinement; positions likewise.

@@ -20,7 +20,6 @@ namespace {
 
 Point3 coords(const HPoint& p) { return {p.coordinate(0), p.coordinate(1), p.coordinate(2)}; }
 
-std::string tet_text(const topology::Tet& t) { return ids_text(t); }
 
 // The verifier's own static filter (deliberately not the kernel's cascade, whose answers it
 // checks), for tets whose twelve coordinates are all doubles: det[b-a, c-a, d-a] evaluated in
@@ -343,7 +342,7 @@ MapVerification verify_map(const VerificationInput& in, const std::vector<topolo
   v.degenerate = t.zero;
   v.target_positive = t.first_bad == SIZE_MAX;
   if (!v.target_positive)
-    fail("tet " + tet_text(tets[t.first_bad]) + " is " + (t.first_sign == Sign::zero ? "degenerate" : "inverted") +
+    fail("tet " + ids_text(tets[t.first_bad]) + " is " + (t.first_sign == Sign::zero ? "degenerate" : "inverted") +
          " in the target (" + std::to_string(t.negative) + " inverted, " + std::to_string(t.zero) + " degenerate)");
   if (in.parents) {
     const std::string why =
@@ -353,7 +352,7 @@ MapVerification verify_map(const VerificationInput& in, const std::vector<topolo
   } else {
     const Counts s = orientation_counts(tets, source);
     v.source_positive = s.first_bad == SIZE_MAX;
-    if (!v.source_positive) fail("tet " + tet_text(tets[s.first_bad]) + " is not positive in the source");
+    if (!v.source_positive) fail("tet " + ids_text(tets[s.first_bad]) + " is not positive in the source");
   }
 
   const std::size_t n_in = in.source->size();

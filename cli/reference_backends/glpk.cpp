@@ -1,6 +1,6 @@
 // The reference program `cmx-glpk` (GPL through GLPK; tests and benchmarks, never installed):
 // `--lp glpk` selects GLPK's exact simplex.
-#include "cli/common_options.hpp"
+#include "cli/reference_backends/reference_backends.hpp"
 #include "lp/glpk/glpk_backend.hpp"
 
 namespace cmx::cli {

@@ -1,5 +1,5 @@
 // The MIT program `cmx`: no reference backend, so `--lp glpk` is refused with a pointer to cmx-glpk.
-#include "cli/common_options.hpp"
+#include "cli/reference_backends/reference_backends.hpp"
 
 namespace cmx::cli {
 

@@ -73,7 +73,7 @@ std::string binary41(int size, bool big_endian) {
   return text + b.out + "\n$EndElements\n$NodeData\n1\n\"d\"\n1\n0\n3\n0\n1\n1\n" + std::string(12, '\x01') + "\n$EndNodeData\n";
 }
 
-void check_unit_tet(const TetMeshData& m) {
+void check_gmsh_unit_tet(const TetMeshData& m) {
   REQUIRE(m.positions.size() == 4);
   CHECK(m.positions[1] == Point3{Rational(1), Rational(0), Rational(0)});
   CHECK(m.positions[3] == Point3{Rational(0), Rational(0), Rational(1)});
@@ -89,7 +89,7 @@ TEST_CASE("Gmsh 4.1 binary: entities, node and element blocks, both byte orders,
     for (bool big : {false, true}) {
       CAPTURE(size);
       CAPTURE(big);
-      check_unit_tet(read_gmsh(binary41(size, big), "bin41.msh"));
+      check_gmsh_unit_tet(read_gmsh(binary41(size, big), "bin41.msh"));
     }
 }
 
