@@ -16,6 +16,7 @@
 #include "arith/exact_decimal.hpp"
 #include "cli/command.hpp"
 #include "cli/command_line.hpp"
+#include "cli/common_options.hpp"
 #include "cli/files.hpp"
 #include "cli/mesh_input.hpp"
 #include "cli/messages.hpp"
@@ -71,18 +72,7 @@ void add_options(CLI::App& app, BoundaryArgs& a) {
                  "(fingers, tunnels) get a fair share of the shape; 0 to 100")
       ->type_name("N")
       ->check(CLI::Range(0, 100));
-  const auto corners = [](const std::string& text) {
-    if (text == "random") return generators::CornerChoice::random;
-    if (text == "farthest") return generators::CornerChoice::farthest;
-    throw std::invalid_argument("unknown corner choice '" + text + "' (random or farthest)");
-  };
-  add_parsed(app, "--corners", a.corners, corners,
-             "random (default: the tetrahedron's corners go to drawn boundary\n"
-             "vertices) or farthest (to the ends of the longest protrusion or tunnel\n"
-             "and two vertices far from both, so that its vertices are spaced along\n"
-             "edges instead of crowded into a face; stiff-tet puts its corner 3 at\n"
-             "the inner end and corners 0, 1, 2 on a triangle at the outer end)")
-      ->type_name("C");
+  add_corners_option(app, a.corners);
 }
 
 // The shape with --seed applied; two different seeds are a contradiction.

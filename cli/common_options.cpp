@@ -48,4 +48,19 @@ CLI::Option* add_norm_option(CLI::App& app, lp::Norm& into, const std::string& d
   return add_parsed(app, "--norm", into, parse, description)->type_name("NAME");
 }
 
+CLI::Option* add_corners_option(CLI::App& app, generators::CornerChoice& into) {
+  const auto parse = [](const std::string& text) {
+    if (text == "random") return generators::CornerChoice::random;
+    if (text == "farthest") return generators::CornerChoice::farthest;
+    throw std::invalid_argument("unknown corner choice '" + text + "' (random or farthest)");
+  };
+  return add_parsed(app, "--corners", into, parse,
+                    "random (default: the tetrahedron's corners go to drawn boundary\n"
+                    "vertices) or farthest (to the ends of the longest protrusion or tunnel\n"
+                    "and two vertices far from both, so that its vertices are spaced along\n"
+                    "edges instead of crowded into a face; stiff-tet puts its corner 3 at\n"
+                    "the inner end and corners 0, 1, 2 on a triangle at the outer end)")
+      ->type_name("C");
+}
+
 }  // namespace cmx::cli

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "cli/command_line.hpp"
+#include "generators/boundary_shapes.hpp"
 #include "kernel/filter_policy.hpp"
 #include "lp/row_weights.hpp"
 #include "topology/topological_expansion.hpp"
@@ -17,5 +18,7 @@ CLI::Option* add_filter_option(CLI::App& app, FilterPolicy& into, bool allow_nai
 CLI::Option* add_lp_option(CLI::App& app, std::string& into, const std::string& description);
 // --norm l2-upper|l1
 CLI::Option* add_norm_option(CLI::App& app, lp::Norm& into, const std::string& description);
+// --corners random|farthest, for generated boundary shapes (generators/boundary_shapes.hpp).
+CLI::Option* add_corners_option(CLI::App& app, generators::CornerChoice& into);
 
 }  // namespace cmx::cli

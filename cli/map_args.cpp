@@ -14,7 +14,8 @@ const HelpText help = {
     "usage: cmx map DOMAIN (--boundary B.txt | --codomain MESH | --shape SHAPE) [-o OUT]\n"
     "               [--format tmap,vtu,ovm,vtk,mesh,msh] [--report R.json] [--report-on-failure]\n"
     "               [--time-limit S] [--check] [--no-collapse] [--no-merge] [--no-flip-collapse]\n"
-    "               [--order priority|index|random:SEED] [--seed N] [--precision dyadic|shift|segment|none]\n"
+    "               [--order priority|index|random:SEED] [--seed N] [--corners random|farthest]\n"
+    "               [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
     "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
     "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--subclusters N]\n"
@@ -59,6 +60,7 @@ void add_problem_options(CLI::App& app, MapArgs& a) {
   };
   add_parsed(app, "--shape", a.shape, shape, "generated boundary: tet, stiff-tet, sphere, star[:SEED]")->type_name("SHAPE");
   add_parsed(app, "--seed", a.seed, parse_seed, "seed of generated shapes (default 1234; star:SEED names its own);\n0 to 2^64-1")->type_name("N");
+  add_corners_option(app, a.corners);
 }
 
 void add_output_options(CLI::App& app, MapArgs& a) {
@@ -235,6 +237,8 @@ std::optional<int> parse_map_args(const std::vector<std::string>& args, MapArgs&
   if (io::is_facet_list_path(a.domain)) a.options.combinatorial = true;
   if (!a.boundary.empty() + !a.codomain.empty() + !a.shape.empty() != 1)
     usage_error("give exactly one of --boundary, --codomain, --shape");
+  if (app.get_option("--corners")->count() > 0 && a.shape.empty())
+    usage_error("--corners chooses the corners of a generated boundary: it needs --shape");
   if (a.options.init == algorithm::InitialMapKind::given && a.init_file.empty() && a.codomain.empty())
     usage_error("--init codomain needs --codomain");
   return std::nullopt;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "algorithm/map.hpp"
+#include "generators/boundary_shapes.hpp"
 
 namespace cmx::cli {
 
@@ -15,6 +16,7 @@ struct MapArgs {
   std::vector<std::string> formats;  // from --format (OUT's extension is added by the output plan)
   bool report_on_failure = false;    // a failed run may replace an existing report or trace
   std::uint64_t seed = 1234;
+  generators::CornerChoice corners = generators::CornerChoice::random;  // --corners, with --shape
   algorithm::MapOptions options = program_defaults();  // time limit, check and the method's choices
 
   // The library's defaults, except the initial map: the program starts from `auto` (a Tutte map

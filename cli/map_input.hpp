@@ -5,6 +5,7 @@
 #include <string>
 
 #include "algorithm/map.hpp"
+#include "generators/boundary_shapes.hpp"
 
 namespace cmx::cli {
 
@@ -17,7 +18,8 @@ namespace cmx::cli {
 // the combinatorics alone; the problem's source positions are zeros.
 algorithm::MapProblem load_map_problem(const std::string& domain_path, const std::string& boundary_path,
                                        const std::string& codomain_path, const std::string& shape, std::uint64_t seed,
-                                       bool combinatorial = false);
+                                       bool combinatorial = false,
+                                       generators::CornerChoice corners = generators::CornerChoice::random);
 
 // The initial map of --init FILE (lines 'index x y z' for every vertex) or, when init_file is
 // empty, --init codomain (every position of the codomain mesh) into p.initial_target. Throws

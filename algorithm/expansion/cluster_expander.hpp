@@ -71,9 +71,11 @@ class ClusterExpander {
   void note_progress();    // a new smallest cluster of this attempt
   bool stalled() const;    // too many expansions since the smallest cluster (stall_bound)
   ExpansionOutcome stall() const;
-  std::optional<ExpansionOutcome> nobuenoss_ahead() const;  // a stall no other order escapes
+  // `end` (a stall, or every candidate failed) when no other order escapes it.
+  std::optional<ExpansionOutcome> nobuenoss_ahead(ExpansionOutcome end) const;
   std::optional<ExpansionOutcome> check_limits() const;
   ExpansionOutcome stuck() const;
+  ExpansionOutcome nobuenoss_now() const;  // no cluster vertex satisfies Eq. (1)
   void report_progress(bool final);
 
   // --- classification ----------------------------------------------------------------------

@@ -43,12 +43,13 @@ ExpansionOutcome ClusterExpander::stall() const {
                                  " restarts in other orders)"};
 }
 
-// A stall where greedy expansion cannot finish whatever the geometry: topological expansion
-// (Eq. (1) alone, topology/topological_expansion.hpp) from the cluster mesh left stops at a
-// NOBUENOSS in the default order and in random:1..3. Then no restart in another order is tried
-// (the input's own cluster mesh is a trap for every order on Furch's knotted hole) and the run
-// ends as a NOBUENOSS, which the shelling search of the fallback then examines (map.cpp).
-std::optional<ExpansionOutcome> ClusterExpander::nobuenoss_ahead() const {
+// A stall, or a state where every candidate's refinement failed, where greedy expansion cannot
+// finish whatever the geometry: topological expansion (Eq. (1) alone,
+// topology/topological_expansion.hpp) from the cluster mesh left stops at a NOBUENOSS in the
+// default order and in random:1..3. Then no restart in another order is tried (the input's own
+// cluster mesh is a trap for every order on Furch's knotted hole) and the run ends as a NOBUENOSS,
+// which the shelling search of the fallback then examines (map.cpp).
+std::optional<ExpansionOutcome> ClusterExpander::nobuenoss_ahead(ExpansionOutcome end) const {
   std::size_t fewest = SIZE_MAX;
   for (std::uint64_t k = 0; k < 4; ++k) {
     const topology::ExpansionOrder order =
@@ -57,7 +58,10 @@ std::optional<ExpansionOutcome> ClusterExpander::nobuenoss_ahead() const {
     if (!t.stuck) return std::nullopt;
     fewest = std::min(fewest, t.remaining.size());
   }
-  ExpansionOutcome out = stall();
+  // Nothing expandable even topologically: the cluster mesh left is itself a NOBUENOSS (the
+  // refinement of the last candidates can leave one behind).
+  if (fewest == cluster_) return nobuenoss_now();
+  ExpansionOutcome out = std::move(end);
   out.message += "; NOBUENOSS ahead: topological expansion from the cluster mesh left stops at one in the default "
                  "order and random:1..3 (" + std::to_string(fewest) + " or more cluster vertices left)";
   out.nobuenoss = true;
@@ -92,12 +96,15 @@ std::optional<ExpansionOutcome> ClusterExpander::check_limits() const {
   return std::nullopt;
 }
 
+ExpansionOutcome ClusterExpander::nobuenoss_now() const {
+  return {MapOutcome::stuck,
+          "NOBUENOSS: " + std::to_string(cluster_) +
+              " cluster vertices left and none satisfies Eq. (1) (b0 = chi = 1 of its unexpanded link)",
+          true};
+}
+
 ExpansionOutcome ClusterExpander::stuck() const {
-  if (failures_ == 0)
-    return {MapOutcome::stuck,
-            "NOBUENOSS: " + std::to_string(cluster_) +
-                " cluster vertices left and none satisfies Eq. (1) (b0 = chi = 1 of its unexpanded link)",
-            true};
+  if (failures_ == 0) return nobuenoss_now();
   return {MapOutcome::stuck, std::to_string(cluster_) +
                                  " cluster vertices left; star-shapification or inflation "
                                  "failed for every remaining candidate"};

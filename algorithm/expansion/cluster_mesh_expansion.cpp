@@ -49,7 +49,11 @@ ExpansionOutcome ClusterExpander::run() {
       // Every candidate failed: one more round in which refinement may also push dangling
       // leaves and inflate around cut vertices (heavier, and prone to chains of refinement, so
       // only when nothing else is left).
-      if (aggressive_ || failures_ == 0) return stuck();
+      if (failures_ == 0) return stuck();
+      if (aggressive_) {
+        if (auto doomed = nobuenoss_ahead(stuck())) return *doomed;
+        return stuck();
+      }
       aggressive_ = true;
       for (VertexId v{0}; v < e_.num_vertices(); ++v)
         if (e_.unexpanded[v]) queue_.mark(v);
@@ -77,7 +81,7 @@ ExpansionOutcome ClusterExpander::run() {
     // ends the last attempt (no restart left): going on only expands what the refinement pushes
     // while the bits grow.
     if (s_.max_restarts > 0 && stalled()) {
-      if (auto doomed = nobuenoss_ahead()) return *doomed;
+      if (auto doomed = nobuenoss_ahead(stall())) return *doomed;
       return watch_runaway_ ? ran_away() : stall();
     }
     if (runaway()) return ran_away();

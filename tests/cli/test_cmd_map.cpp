@@ -445,3 +445,47 @@ TEST_CASE("cmx map shows a progress line naming the phase only on a terminal and
   const auto piped = run_cmx({"map", c.mesh, "--boundary", c.boundary});
   CHECK(piped.err.find("expansion:") == std::string::npos);
 }
+
+TEST_CASE("cmx map --shape S --corners farthest generates the boundary cmx boundary does, and --corners needs --shape") {
+  // Two fingers two cells wide and 80 long: drawn corners find no sphere boundary (exit 4), the
+  // ends of the longest stretch do, and the map is the one of the same boundary given as a file.
+  const std::string dir = fresh_directory();
+  const std::string mesh = dir + "/fingers.vtk", boundary = dir + "/far.txt";
+  REQUIRE(run_cmx({"generate-mesh", "--shape", "fingers:2,2,80", "-o", mesh, "-q"}).exit_code == 0);
+  const auto drawn = run_cmx({"map", mesh, "--shape", "sphere", "-o", dir + "/drawn", "-q"});
+  CHECK(drawn.exit_code == 4);
+  CHECK(drawn.err.find("no valid 'sphere' boundary") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/drawn.tmap"));
+  const auto far = run_cmx({"map", mesh, "--shape", "sphere", "--corners", "farthest", "-o", dir + "/far", "-q"});
+  INFO(far.err);
+  REQUIRE(far.exit_code == 0);
+  REQUIRE(run_cmx({"boundary", mesh, "--shape", "sphere", "--corners", "farthest", "-o", boundary, "-q"}).exit_code == 0);
+  REQUIRE(run_cmx({"map", mesh, "--boundary", boundary, "-o", dir + "/file", "-q"}).exit_code == 0);
+  CHECK(file_text(dir + "/far.tmap") == file_text(dir + "/file.tmap"));
+  // Without a generated shape the option has nothing to choose: a usage error naming it.
+  const auto lone = run_cmx({"map", mesh, "--boundary", boundary, "--corners", "farthest", "-o", dir + "/lone"});
+  CHECK(lone.exit_code == 2);
+  CHECK(lone.err.find("--corners") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/lone.tmap"));
+  CHECK(run_cmx({"map", mesh, "--shape", "sphere", "--corners", "nearest", "-o", dir + "/bad"}).exit_code == 2);
+}
+
+TEST_CASE("cmx map --combinatorial on Furch's knotted hole ends as a reported NOBUENOSS, not a bare stuck") {
+  // Mapped from its tets alone onto a tet with farthest corners, greedy expansion reaches a state
+  // where every remaining candidate's refinement failed and no cluster vertex is left that
+  // satisfies Eq. (1): the run says NOBUENOSS (exit 7, "nobuenoss": true in the report) and what
+  // the fallback's shelling search found, instead of a failure with no reason behind it.
+  const std::string dir = fresh_directory();
+  const std::string mesh = dir + "/knotted.ovm", report = dir + "/r.json";
+  REQUIRE(run_cmx({"generate-mesh", "--shape", "knotted-hole", "-o", mesh, "-q"}).exit_code == 0);
+  const auto r = run_cmx({"map", mesh, "--combinatorial", "--shape", "tet", "--corners", "farthest", "-o",
+                          dir + "/out", "--report", report, "--threads", "1"});
+  INFO(r.err);
+  CHECK(r.exit_code == 7);
+  CHECK(r.err.find("NOBUENOSS") != std::string::npos);
+  CHECK(r.err.find("no shelling of the input found") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/out.tmap"));
+  const std::string json = file_text(report);
+  CHECK(json.find("\"nobuenoss\": true") != std::string::npos);
+  CHECK(json.find("\"combinatorial\": true") != std::string::npos);
+}
