@@ -7,6 +7,14 @@
 
 namespace cmx::algorithm::tuning {
 
+// The Tutte map of --init auto (local/initial_map.hpp) is factorised only when the symbolic
+// analysis predicts at most this many multiply-adds per second of half the time limit: the
+// factorisation cannot be interrupted, so a time limit of T seconds must not be spent in it past
+// T/2. 1e9 per second is below what Eigen's simplicial LDLT reached here (Furch's knotted hole
+// at S = 2: 1.17e11 in 55 s), so slower machines still keep to the limit. Without a time limit the
+// factorisation always runs. The shared cases need at most 5.2e7 (moai): far below any budget.
+inline constexpr double tutte_multiply_adds_per_second = 1e9;
+
 // Refinement budget of one run: beyond max(floor, per_input_vertex x input vertices) vertices the
 // loop stops as stuck: a run that refines a mesh fifty-fold has gone astray (growth on real
 // meshes is a few percent, bench/RESULTS.md); the floor keeps tiny inputs from stopping early.

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -126,12 +127,29 @@ std::vector<std::array<double, 3>> prescribed_doubles(const MapProblem& p, std::
   return out;
 }
 
+// Eigen's simplicial LDLT with the cost of its factorisation known before it runs: the symbolic
+// analysis counts the nonzeros of every column of L (Eigen keeps the counts in a protected
+// member, hence the subclass), and the factorisation costs about the sum of their squares in
+// multiply-adds. The factorisation itself cannot be interrupted, so this is what decides whether
+// it may run at all.
+class CountedLDLT : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> {
+ public:
+  double factorisation_flops() const {
+    double flops = 0;
+    for (Eigen::Index j = 0; j < m_nonZerosPerCol.size(); ++j) {
+      const double c = m_nonZerosPerCol[j];
+      flops += c * c;
+    }
+    return flops;
+  }
+};
+
 // Solves the Laplacian system on the interior vertices (interior[r] is row r, slot its inverse)
 // with one factorisation and three right-hand sides. False, with `why`, when the factorisation
 // or the solve fails or a value is not finite.
 bool solve_laplacian(const EdgeAdjacency& adj, const std::vector<std::uint32_t>& interior,
                      const std::vector<std::uint32_t>& slot,
-                     const std::vector<std::array<double, 3>>& prescribed, Eigen::MatrixX3d& x,
+                     const std::vector<std::array<double, 3>>& prescribed, double max_flops, Eigen::MatrixX3d& x,
                      std::string& why) {
   const auto m = static_cast<Eigen::Index>(interior.size());
   std::vector<Eigen::Triplet<double>> entries;
@@ -150,7 +168,16 @@ bool solve_laplacian(const EdgeAdjacency& adj, const std::vector<std::uint32_t>&
   }
   Eigen::SparseMatrix<double> laplacian(m, m);
   laplacian.setFromTriplets(entries.begin(), entries.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(laplacian);
+  CountedLDLT solver;
+  solver.analyzePattern(laplacian);
+  if (const double flops = solver.factorisation_flops(); flops > max_flops) {
+    char text[160];
+    std::snprintf(text, sizeof text, "about %.3g multiply-adds for %zu interior vertices, more than the %.3g allowed",
+                  flops, interior.size(), max_flops);
+    why = std::string("the Tutte system's sparse Cholesky factorisation would take ") + text;
+    return false;
+  }
+  solver.factorize(laplacian);
   if (solver.info() != Eigen::Success) {
     why = "the sparse Cholesky factorisation of the Tutte system failed";
     return false;
@@ -178,7 +205,7 @@ std::vector<char> boundary_flags(const MapProblem& p) {
 
 }  // namespace
 
-InitialMap tutte_map(const MapProblem& problem, bool exact) {
+InitialMap tutte_map(const MapProblem& problem, bool exact, double max_flops) {
   const Clock::time_point start = Clock::now();
   std::string why = boundary_list_error(problem);
   if (why.empty()) why = tet_index_error(problem);
@@ -202,7 +229,7 @@ InitialMap tutte_map(const MapProblem& problem, bool exact) {
     return failed("too many interior vertices for the sparse solver: " + std::to_string(interior.size()),
                   start);
   Eigen::MatrixX3d x;
-  if (!interior.empty() && !solve_laplacian(adj, interior, slot, out.doubles, x, why))
+  if (!interior.empty() && !solve_laplacian(adj, interior, slot, out.doubles, max_flops, x, why))
     return failed(why, start);
   for (std::size_t r = 0; r < interior.size(); ++r)
     for (int k = 0; k < 3; ++k) out.doubles[interior[r]][k] = x(static_cast<Eigen::Index>(r), k);

@@ -3,6 +3,7 @@
 // finds the non-positive tets and re-maps only stars around them (docs/algorithm/local.md, "Initial
 // maps"). Eigen solves the Tutte system; it is included only in initial_map.cpp, never here.
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,12 @@ struct InitialMap {
 // non-finite solution. Interior vertices are numbered in vertex order, edges in sorted order.
 // With exact = false only `doubles` is filled: a caller that may reject the map from its doubles
 // (cmx map --init auto) then pays for no rational until it keeps the map (exact_target).
-InitialMap tutte_map(const MapProblem& problem, bool exact = true);
+// The factorisation cannot be interrupted (no time limit reaches into it), and its cost grows
+// much faster than the mesh (fill-in of a 3D Laplacian): when the symbolic analysis predicts more
+// than `max_flops` multiply-adds, nothing is factorised and the map is not ok, with the estimate
+// in `message`.
+InitialMap tutte_map(const MapProblem& problem, bool exact = true,
+                     double max_flops = std::numeric_limits<double>::infinity());
 
 // Fills m.target from m.doubles: interior vertices at their doubles taken exactly, boundary
 // vertices at their prescribed positions. Pre: m from tutte_map(problem, false), m.ok.

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -13,6 +15,7 @@
 #include "algorithm/doubles/double_output.hpp"
 #include "algorithm/map_error.hpp"
 #include "algorithm/run_control.hpp"
+#include "algorithm/tuning.hpp"
 #include "algorithm/verify/output_statistics.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
@@ -271,8 +274,12 @@ std::size_t folded_in_doubles(const std::vector<Tet>& tets, const std::vector<st
 std::optional<std::vector<HPoint>> initial_target(const MapProblem& problem, const MapOptions& options,
                                                   LocalRepairStatistics& ls, std::string& why) {
   const bool automatic = options.init == InitialMapKind::automatic;
+  const double limit = options.time_limit_seconds;
+  const double max_flops = automatic && limit > 0 && std::isfinite(limit)
+                               ? tuning::tutte_multiply_adds_per_second * limit / 2
+                               : std::numeric_limits<double>::infinity();
   InitialMap m = options.init == InitialMapKind::given ? given_map(problem, problem.initial_target)
-                                                       : tutte_map(problem, !automatic);
+                                                       : tutte_map(problem, !automatic, max_flops);
   ls.init = options.init == InitialMapKind::given ? "given" : "tutte";
   ls.seconds_init = m.seconds;
   if (!m.ok) {

@@ -329,3 +329,19 @@ TEST_CASE("tutte_map without the exact map gives the same doubles, and exact_tar
   CHECK(lean.target == full.target);
   CHECK(boundary_exactly_prescribed(p, lean.target));
 }
+
+TEST_CASE("tutte_map predicts its factorisation's cost and refuses one beyond max_flops, before factorising") {
+  const MapProblem p = test::identity_problem(perturbed_grid(8, 8, 8, 3));
+  const InitialMap unlimited = tutte_map(p);
+  REQUIRE_MESSAGE(unlimited.ok, unlimited.message);
+  // 343 interior vertices: L has at least one entry below the diagonal per column but the last,
+  // so the estimate is at least 342 and a budget of 300 is refused, with the estimate and the count.
+  const InitialMap refused = tutte_map(p, true, 300);
+  CHECK_FALSE(refused.ok);
+  CHECK(refused.message.find("multiply-adds for 343 interior vertices, more than the 300 allowed") != std::string::npos);
+  CHECK(refused.target.empty());
+  // A budget above the estimate changes nothing.
+  const InitialMap within = tutte_map(p, true, 1e12);
+  REQUIRE(within.ok);
+  CHECK(within.target == unlimited.target);
+}

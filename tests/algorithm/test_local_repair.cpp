@@ -160,3 +160,18 @@ TEST_CASE("an explicit initial map needs exact coordinates, and one of the right
   p.initial_target.pop_back();
   CHECK_THROWS_AS(map_to_domain(p, given()), MapError);
 }
+
+TEST_CASE("auto does not start a Tutte factorisation that half the time limit cannot pay for") {
+  // At the assumed 1e9 multiply-adds per second (algorithm/tuning.hpp), a limit of 1e-7 s allows
+  // 50: the factorisation is not started, the run goes on with the global method (which then
+  // meets the time limit), and the fallback says why.
+  const MapProblem p = problem_from(voxel_ball(4, 2), "star:5");
+  MapOptions o;
+  o.init = InitialMapKind::automatic;
+  o.time_limit_seconds = 1e-7;
+  const MapResult r = map_to_domain(p, o);
+  CHECK(std::string(r.stats.local.init) == "shrink");
+  CHECK(r.stats.local.fallback.find("sparse Cholesky factorisation would take about") != std::string::npos);
+  CHECK(r.stats.local.fallback.find("more than the 50 allowed") != std::string::npos);
+  CHECK(r.outcome == MapOutcome::time_limit);
+}
