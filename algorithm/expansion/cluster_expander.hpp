@@ -70,6 +70,7 @@ class ClusterExpander {
   static ExpansionOutcome ran_away();  // the outcome that makes expand_cluster restart
   void note_progress();    // a new smallest cluster of this attempt
   bool stalled() const;    // too many expansions since the smallest cluster (stall_bound)
+  bool stall_check_due() const;  // a stall long enough to look for a NOBUENOSS ahead already
   ExpansionOutcome stall() const;
   // `end` (a stall, or every candidate failed) when no other order escapes it.
   std::optional<ExpansionOutcome> nobuenoss_ahead(ExpansionOutcome end) const;

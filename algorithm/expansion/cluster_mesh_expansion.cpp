@@ -84,6 +84,8 @@ ExpansionOutcome ClusterExpander::run() {
       if (auto doomed = nobuenoss_ahead(stall())) return *doomed;
       return watch_runaway_ ? ran_away() : stall();
     }
+    if (s_.max_restarts > 0 && stall_check_due())
+      if (auto doomed = nobuenoss_ahead(stall())) return *doomed;
     if (runaway()) return ran_away();
   }
   report_progress(true);
