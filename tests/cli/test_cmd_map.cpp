@@ -489,3 +489,31 @@ TEST_CASE("cmx map --combinatorial on Furch's knotted hole ends as a reported NO
   CHECK(json.find("\"nobuenoss\": true") != std::string::npos);
   CHECK(json.find("\"combinatorial\": true") != std::string::npos);
 }
+
+TEST_CASE("cmx map on Furch's knotted hole stalls, finds a NOBUENOSS ahead and ends there (exit 7)") {
+  // With its geometry and a stiff-tet boundary of farthest corners, greedy expansion stops making
+  // the cluster smaller; the early check (after 64, 128, ... stalled expansions) expands the
+  // cluster mesh left topologically in four orders, each stops at a NOBUENOSS, and the run ends
+  // as one, without restarts and long before the stall bound.
+  const std::string dir = fresh_directory();
+  const std::string mesh = dir + "/knotted.ovm", report = dir + "/r.json";
+  REQUIRE(run_cmx({"generate-mesh", "--shape", "knotted-hole", "-o", mesh, "-q"}).exit_code == 0);
+  const auto r = run_cmx({"map", mesh, "--shape", "stiff-tet", "--corners", "farthest", "-o", dir + "/out", "--report",
+                          report, "--threads", "1"});
+  INFO(r.err);
+  CHECK(r.exit_code == 7);
+  CHECK(r.err.find("stalled: ") != std::string::npos);
+  CHECK(r.err.find("NOBUENOSS ahead: topological expansion from the cluster mesh left stops at one") != std::string::npos);
+  // "the last N expansions never left fewer than ...": N is one of the early checks, below the
+  // stall bound of 512 + L/8.
+  const std::size_t last = r.err.find("the last ");
+  REQUIRE(last != std::string::npos);
+  const int stalled_for = std::atoi(r.err.c_str() + last + 9);
+  CHECK(stalled_for >= 64);
+  CHECK(stalled_for < 512);
+  CHECK(r.err.find("no shelling of the input found") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/out.tmap"));
+  const std::string json = file_text(report);
+  CHECK(json.find("\"nobuenoss\": true") != std::string::npos);
+  CHECK(json.find("\"restarts\": 0") != std::string::npos);
+}
