@@ -381,9 +381,13 @@ std::vector<std::uint32_t> boundary_vertices(std::span<const Tet> tets, std::siz
 }
 
 ShapeBoundary boundary_for_shape(std::span<const Point3d> vertices, std::span<const Tet> tets,
-                                 std::string_view shape) {
-  const auto spec = generators::parse_boundary_shape(shape);
+                                 std::string_view shape, std::string_view corners) {
+  auto spec = generators::parse_boundary_shape(shape);
   if (!spec) throw Error("unknown shape '" + std::string(shape) + "' (cmx map --help lists the shapes)");
+  if (corners == "farthest")
+    spec->corners = generators::CornerChoice::farthest;
+  else if (corners != "random")
+    throw Error("unknown corner choice '" + std::string(corners) + "' (random or farthest)");
   std::vector<topology::Tet> ts;
   ts.reserve(tets.size());
   for (const Tet& t : tets) {

@@ -200,13 +200,17 @@ MapResult map_to_domain(const double* vertices, std::size_t vertex_count, const 
 std::vector<std::uint32_t> boundary_vertices(std::span<const Tet> tets, std::size_t vertex_count);
 
 // Prescribed boundary positions of a generated star-shaped domain (`cmx map --shape`): shape is
-// tet, cube, octahedron, sphere, star... as `cmx map --help` lists. Throws cmx::Error when the
-// shape does not parse or no valid boundary could be generated for this mesh (the message says why).
+// tet, stiff-tet, sphere, star or star:SEED, as `cmx map --help` lists; corners is "random" (the
+// tetrahedron's corners go to drawn boundary vertices) or "farthest" (to the ends of the longest
+// protrusion or tunnel, as `cmx boundary --corners farthest`: a boundary for thin fingers and
+// knotted tunnels where drawn corners find none). Throws cmx::Error when the shape or the corner
+// choice does not parse, or no valid boundary could be generated for this mesh (the message says
+// why).
 struct ShapeBoundary {
   std::vector<std::uint32_t> ids;  // boundary vertices, ascending
   std::vector<Point3d> positions;  // one per id
 };
 ShapeBoundary boundary_for_shape(std::span<const Point3d> vertices, std::span<const Tet> tets,
-                                 std::string_view shape);
+                                 std::string_view shape, std::string_view corners = "random");
 
 }  // namespace cmx

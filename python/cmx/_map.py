@@ -118,7 +118,7 @@ def _boundary_arg(boundary: Any, n: int):
 
 
 def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optional[str] = None, *,
-        init: Any = "auto", time_limit: float = 0, threads: int = 0,
+        corners: str = "random", init: Any = "auto", time_limit: float = 0, threads: int = 0,
         progress: Optional[Callable[[Progress], Any]] = None, **options: Any) -> Result:
     """Maps the ball mesh (V, T) bijectively onto a star-shaped domain, exactly.
 
@@ -132,6 +132,9 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
                 give the positions (its interior vertices are ignored);
       shape     a generated star-shaped domain: "sphere", "tet", "stiff-tet", "star" or "star:SEED"
                 (the shapes of `cmx map --shape`).
+    corners   with shape: "random" (default) or "farthest", where the generated tetrahedron's
+              corners go (`cmx map --corners`: "farthest" gives boundaries to thin fingers and
+              knotted tunnels where drawn corners find none).
     init      "auto" (default), "shrink", "tutte", or an (n, 3) array / exact rows: the initial
               target ("given"; init="given" with initial_target=... is the same).
     time_limit  seconds (0: none); a run over it returns status "time_limit".
@@ -158,6 +161,8 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
     if len(given) != 1:
         raise InvalidOptions("cmx.map: give exactly one of boundary, codomain or shape"
                              + (f" (got {', '.join(given)})" if given else ""))
+    if corners != "random" and shape is None:
+        raise InvalidOptions("cmx.map: corners chooses the corners of a generated shape: it needs shape")
     exact, vertices = _points(V, "V")
     n = len(vertices)
     tets = _tets(T, n)
@@ -170,7 +175,7 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
         ids = _cmx.boundary_vertices(tets, n)
         positions = [W[i] for i in ids] if p_exact else W[ids]
     else:
-        ids, positions = _shape_boundary(shape, exact, vertices, tets)
+        ids, positions = _shape_boundary(shape, corners, exact, vertices, tets)
         p_exact = False
 
     opts = _run_options(options, init, time_limit, threads, n)
@@ -185,7 +190,7 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
     return result
 
 
-def _shape_boundary(shape: Any, exact: bool, vertices: Any, tets: np.ndarray) -> Tuple[Any, Any]:
+def _shape_boundary(shape: Any, corners: Any, exact: bool, vertices: Any, tets: np.ndarray) -> Tuple[Any, Any]:
     """The boundary ids and positions of a generated shape (cmx map --shape) for the mesh."""
     if not isinstance(shape, str):
         raise InvalidOptions(f"shape: expected a name such as 'sphere', got {shape!r}")
@@ -198,10 +203,10 @@ def _shape_boundary(shape: Any, exact: bool, vertices: Any, tets: np.ndarray) ->
         i, k = bad[0]
         raise InvalidInput(f"vertex {i}: coordinate {'xyz'[k]} is {'NaN' if np.isnan(doubles[i, k]) else 'infinite'}")
     try:
-        return _cmx.boundary_for_shape(doubles, tets, shape)
+        return _cmx.boundary_for_shape(doubles, tets, shape, corners)
     except Error as e:
         message = str(e)
-        cls = InvalidOptions if message.startswith("unknown shape") else InvalidInput
+        cls = InvalidOptions if message.startswith(("unknown shape", "unknown corner choice")) else InvalidInput
         raise cls(message) from None
 
 
@@ -231,11 +236,12 @@ def boundary_vertices(T: Any, vertex_count: Optional[int] = None) -> np.ndarray:
     return _cmx.boundary_vertices(t, _vertex_count(t, vertex_count))
 
 
-def boundary_for_shape(V: Any, T: Any, shape: str):
+def boundary_for_shape(V: Any, T: Any, shape: str, corners: str = "random"):
     """(ids, positions): the boundary vertices of (V, T) and their positions on a generated
-    star-shaped domain (`cmx map --shape`). Raises cmx.Error when the shape does not parse or no
-    valid boundary could be generated for this mesh."""
+    star-shaped domain (`cmx map --shape`), the tetrahedron's corners "random" or "farthest"
+    (`cmx map --corners`). Raises cmx.Error when the shape or the corner choice does not parse
+    or no valid boundary could be generated for this mesh."""
     exact, v = _points(V, "V")
     if exact:
         v = np.array([[float(Fraction(x)) for x in row] for row in v], dtype=np.float64).reshape(-1, 3)
-    return _cmx.boundary_for_shape(v, _tets(T, len(v)), shape)
+    return _cmx.boundary_for_shape(v, _tets(T, len(v)), shape, corners)

@@ -278,17 +278,17 @@ void bind_boundary_helpers(py::module_& m) {
       py::arg("T"), py::arg("vertex_count"));
   m.def(
       "boundary_for_shape",
-      [](const DoubleArray& vertices, const IndexArray& tets, const std::string& shape) {
+      [](const DoubleArray& vertices, const IndexArray& tets, const std::string& shape, const std::string& corners) {
         const std::vector<Point3d> v = points_of(vertices, "V");
         const std::vector<Tet> t = tets_of(tets, "T");
         ShapeBoundary b;
         {
           py::gil_scoped_release release;
-          b = boundary_for_shape(v, t, shape);
+          b = boundary_for_shape(v, t, shape, corners);
         }
         return py::make_tuple(array_of(b.ids), array_of(b.positions));
       },
-      py::arg("V"), py::arg("T"), py::arg("shape"));
+      py::arg("V"), py::arg("T"), py::arg("shape"), py::arg("corners") = "random");
 }
 
 }  // namespace

@@ -210,6 +210,8 @@ TEST_CASE("map_to_domain: bad input is a status with a message naming the culpri
            "vertex 4: coordinate z '1/0' is not an exact number");
   }
   CHECK_THROWS_AS(cmx::boundary_for_shape(a.vertices, a.tets, "teapot"), cmx::Error);
+  CHECK_THROWS_WITH_AS(cmx::boundary_for_shape(a.vertices, a.tets, "tet", "nearest"),
+                       "unknown corner choice 'nearest' (random or farthest)", cmx::Error);
   CHECK_THROWS_AS(cmx::boundary_vertices(std::vector<cmx::Tet>{{0, 1, 2, 9}}, 4), cmx::Error);
 }
 
@@ -315,4 +317,14 @@ TEST_CASE("map_to_domain: merge and flip_collapse switch those collapses off") {
   REQUIRE_MESSAGE(no_merges.ok(), no_merges.message);
   CHECK(no_merges.exact_valid);
   CHECK(report_count(no_merges, "merged") == 0);
+}
+
+TEST_CASE("boundary_for_shape with farthest corners: the same vertices, another placement, and it maps") {
+  const Arrays a = grid();
+  const cmx::ShapeBoundary drawn = cmx::boundary_for_shape(a.vertices, a.tets, "tet");
+  const cmx::ShapeBoundary far = cmx::boundary_for_shape(a.vertices, a.tets, "tet", "farthest");
+  CHECK(far.ids == drawn.ids);
+  CHECK(far.positions != drawn.positions);
+  const cmx::MapResult r = cmx::map_to_domain(a.vertices, a.tets, far.ids, far.positions, quick());
+  CHECK(r.status == cmx::MapStatus::success);
 }

@@ -135,3 +135,21 @@ def test_combinatorial_map_ignores_the_positions(ball):
     # without it, the zero positions are flat tets: refused
     with pytest.raises(cmx.InvalidInput):
         cmx.map(np.zeros_like(V), T, boundary=(ids, positions))
+
+
+def test_farthest_corners_for_a_generated_shape(ball):
+    V, T = ball
+    ids, drawn = cmx.boundary_for_shape(V, T, "sphere")
+    ids_far, far = cmx.boundary_for_shape(V, T, "sphere", corners="farthest")
+    assert ids_far.tolist() == ids.tolist()
+    assert np.allclose(np.linalg.norm(far, axis=1), 1.0, atol=1e-15)
+    assert not np.array_equal(far, drawn)  # another placement of the same shape
+    r = cmx.map(V, T, shape="sphere", corners="farthest")
+    check_map(r, V, T)
+    assert [r.target_exact[i] for i in ids] == [tuple(Fraction(x) for x in p) for p in far.tolist()]
+    with pytest.raises(cmx.InvalidOptions, match="unknown corner choice 'nearest'"):
+        cmx.map(V, T, shape="sphere", corners="nearest")
+    with pytest.raises(cmx.InvalidOptions, match="it needs shape"):
+        cmx.map(V, T, boundary=(ids, far), corners="farthest")
+    with pytest.raises(cmx.Error, match="unknown corner choice"):
+        cmx.boundary_for_shape(V, T, "tet", corners="middle")
