@@ -15,6 +15,7 @@
 
 using cmx::test::Case;
 using cmx::test::file_text;
+using cmx::test::fresh_directory;
 using cmx::test::make_case;
 using cmx::test::run_cmx;
 using cmx::test::run_program;
