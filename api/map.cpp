@@ -384,10 +384,9 @@ ShapeBoundary boundary_for_shape(std::span<const Point3d> vertices, std::span<co
                                  std::string_view shape, std::string_view corners) {
   auto spec = generators::parse_boundary_shape(shape);
   if (!spec) throw Error("unknown shape '" + std::string(shape) + "' (cmx map --help lists the shapes)");
-  if (corners == "farthest")
-    spec->corners = generators::CornerChoice::farthest;
-  else if (corners != "random")
-    throw Error("unknown corner choice '" + std::string(corners) + "' (random or farthest)");
+  const auto choice = generators::parse_corner_choice(corners);
+  if (!choice) throw Error("unknown corner choice '" + std::string(corners) + "' (random or farthest)");
+  spec->corners = *choice;
   std::vector<topology::Tet> ts;
   ts.reserve(tets.size());
   for (const Tet& t : tets) {

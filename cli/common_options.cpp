@@ -50,9 +50,9 @@ CLI::Option* add_norm_option(CLI::App& app, lp::Norm& into, const std::string& d
 
 CLI::Option* add_corners_option(CLI::App& app, generators::CornerChoice& into) {
   const auto parse = [](const std::string& text) {
-    if (text == "random") return generators::CornerChoice::random;
-    if (text == "farthest") return generators::CornerChoice::farthest;
-    throw std::invalid_argument("unknown corner choice '" + text + "' (random or farthest)");
+    const auto corners = generators::parse_corner_choice(text);
+    if (!corners) throw std::invalid_argument("unknown corner choice '" + text + "' (random or farthest)");
+    return *corners;
   };
   return add_parsed(app, "--corners", into, parse,
                     "random (default: the tetrahedron's corners go to drawn boundary\n"

@@ -404,16 +404,6 @@ std::uint32_t farthest_from(const Surface& s, const std::vector<Vec3>& src,
   return best;
 }
 
-// CornerChoice::farthest: from a drawn vertex, the vertex farthest from it and the one farthest
-// from that: the two ends of the surface's longest stretch (the closed end of a tunnel or the tip
-// of a protrusion, typically, and a point far from its mouth). One end becomes corner 0, from
-// which three paths leave (fix_corner_paths), so that they run together down the stretch and
-// space its vertices along three of the tetrahedron's edges instead of crowding it into a face;
-// which end is the inner one is not known, so `swap_ends` swaps them. Corners 2 and 3 are taken
-// far out of the stretch: among the vertices at least 3/4 as far from corner 0 as corner 1 is
-// and, with a source, less than 3/2 as far from corner 1 over the surface as in space (a vertex
-// in a tunnel is much farther over the surface), the farthest from corner 1 and then from 1 and
-// 2 when `draw_rest` is false, drawn ones when it is true.
 // The two ends of the surface's longest stretch found from a drawn start: {inner, outer} (which
 // end is which is not known, so `swap_ends` swaps them).
 std::array<std::uint32_t, 2> stretch_ends(const Surface& s, const std::vector<Vec3>& src, bool swap_ends,
@@ -426,6 +416,16 @@ std::array<std::uint32_t, 2> stretch_ends(const Surface& s, const std::vector<Ve
   return ends;
 }
 
+// CornerChoice::farthest: from a drawn vertex, the vertex farthest from it and the one farthest
+// from that: the two ends of the surface's longest stretch (the closed end of a tunnel or the tip
+// of a protrusion, typically, and a point far from its mouth). One end becomes corner 0, from
+// which three paths leave (fix_corner_paths), so that they run together down the stretch and
+// space its vertices along three of the tetrahedron's edges instead of crowding it into a face;
+// which end is the inner one is not known, so `swap_ends` swaps them. Corners 2 and 3 are taken
+// far out of the stretch: among the vertices at least 3/4 as far from corner 0 as corner 1 is
+// and, with a source, less than 3/2 as far from corner 1 over the surface as in space (a vertex
+// in a tunnel is much farther over the surface), the farthest from corner 1 and then from 1 and
+// 2 when `draw_rest` is false, drawn ones when it is true.
 std::array<std::uint32_t, 4> farthest_corners(const Surface& s, const std::vector<Vec3>& src, bool swap_ends,
                                               bool draw_rest, std::mt19937_64& rng) {
   const auto ends = stretch_ends(s, src, swap_ends, rng);
@@ -623,6 +623,12 @@ const char* shape_name(BoundaryShape shape) {
   for (const auto& [s, name] : shape_names)
     if (s == shape) return name.data();
   return "?";
+}
+
+std::optional<CornerChoice> parse_corner_choice(std::string_view text) {
+  if (text == "random") return CornerChoice::random;
+  if (text == "farthest") return CornerChoice::farthest;
+  return std::nullopt;
 }
 
 std::optional<BoundaryShapeSpec> parse_boundary_shape(std::string_view text) {

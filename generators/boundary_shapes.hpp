@@ -83,6 +83,8 @@ std::optional<BoundaryShapeSpec> parse_boundary_shape(std::string_view text);
 std::string to_string(const BoundaryShapeSpec& spec);
 // "tet", "stiff-tet", "sphere", "star".
 const char* shape_name(BoundaryShape shape);
+// "random" or "farthest" (cmx boundary --corners); nullopt otherwise.
+std::optional<CornerChoice> parse_corner_choice(std::string_view text);
 
 struct GeneratedBoundary {
   bool ok = false;

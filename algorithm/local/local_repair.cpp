@@ -30,7 +30,6 @@ using topology::TetId;
 using topology::Triangle;
 using topology::VertexId;
 
-
 Point3 point_of(const HPoint& p) { return {p.coordinate(0), p.coordinate(1), p.coordinate(2)}; }
 
 // One star as a problem of its own. Local vertex i is global vertex `global[i]` (the star's

@@ -20,7 +20,6 @@ namespace {
 
 Point3 coords(const HPoint& p) { return {p.coordinate(0), p.coordinate(1), p.coordinate(2)}; }
 
-
 // The verifier's own static filter (deliberately not the kernel's cascade, whose answers it
 // checks), for tets whose twelve coordinates are all doubles: det[b-a, c-a, d-a] evaluated in
 // Shewchuk's order for orient3d, whose rounding error is at most (7 + 56 eps) eps times the

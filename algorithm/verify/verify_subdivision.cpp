@@ -70,12 +70,6 @@ Rational det4(std::array<std::array<Rational, 4>, 4> m) {
   return det;
 }
 
-std::string tet_ids_text(const topology::Tet& t) {
-  const std::array<std::uint32_t, 4> ids{t[0].idx(), t[1].idx(), t[2].idx(), t[3].idx()};
-  return ids_text(ids);
-}
-
-
 }  // namespace
 
 std::string verify_subdivision(const std::vector<topology::Tet>& input_tets, std::size_t input_vertices,
@@ -103,7 +97,7 @@ std::string verify_subdivision(const std::vector<topology::Tet>& input_tets, std
   for (const auto& t : tets) {
     std::vector<std::uint32_t> support;
     for (auto v : t) {
-      if (v.idx() >= coords.size()) return text("output tet ", tet_ids_text(t), " names a vertex without a record");
+      if (v.idx() >= coords.size()) return text("output tet ", ids_text(t), " names a vertex without a record");
       for (const auto& [u, x] : *coords[v.idx()]) support.push_back(u);
     }
     std::sort(support.begin(), support.end());
@@ -112,7 +106,7 @@ std::string verify_subdivision(const std::vector<topology::Tet>& input_tets, std
     if (support.size() == 4) std::copy(support.begin(), support.end(), key.begin());
     const auto in = support.size() == 4 ? by_vertices.find(key) : by_vertices.end();
     if (in == by_vertices.end())
-      return text("output tet ", tet_ids_text(t), " lies in no input tet (its vertices span ", std::to_string(support.size()),
+      return text("output tet ", ids_text(t), " lies in no input tet (its vertices span ", std::to_string(support.size()),
                   " input vertices", support.size() == 4 ? " that are not a tet's" : "", ")");
     const topology::Tet& host = input_tets[in->second];
     std::array<std::array<Rational, 4>, 4> m{};
@@ -122,13 +116,13 @@ std::string verify_subdivision(const std::vector<topology::Tet>& input_tets, std
           if (host[std::size_t(c)].idx() == u) m[std::size_t(r)][std::size_t(c)] = x;
     const Rational volume = det4(m);
     if (volume <= 0)
-      return text("output tet ", tet_ids_text(t), " is ", volume == 0 ? "flat" : "inverted", " inside input tet ",
-                  tet_ids_text(host), " (barycentric coordinates)");
+      return text("output tet ", ids_text(t), " is ", volume == 0 ? "flat" : "inverted", " inside input tet ",
+                  ids_text(host), " (barycentric coordinates)");
     filled[in->second] += volume;
   }
   for (std::size_t k = 0; k < input_tets.size(); ++k)
     if (filled[k] != 1)
-      return text("the output tets inside input tet ", tet_ids_text(input_tets[k]), " fill ", filled[k].get_str(),
+      return text("the output tets inside input tet ", ids_text(input_tets[k]), " fill ", filled[k].get_str(),
                   " of it, not exactly all");
   return {};
 }
