@@ -2,27 +2,24 @@
 
 #include <algorithm>
 #include <charconv>
-#include <concepts>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <numbers>
-#include <queue>
 #include <random>
-#include <set>
-#include <span>
 #include <string_view>
 #include <utility>
 
-#include "generators/disjoint_paths.hpp"
+#include "generators/boundary_corners.hpp"
+#include "generators/boundary_surface.hpp"
 #include "kernel/orient.hpp"
 #include "topology/complex_queries.hpp"
 
-namespace cmx::generators {
+// The placement and the checks; the surface and its helpers are in generators/boundary_surface.hpp,
+// the corners and the paths between them in generators/boundary_corners.hpp.
+namespace cmx::generators::detail {
 namespace {
 
 using topology::invalid_index;
-using Vec3 = std::array<double, 3>;
 
 constexpr std::uint64_t default_seed = BoundaryShapeSpec{}.seed;
 
@@ -33,146 +30,7 @@ constexpr std::array<std::pair<BoundaryShape, std::string_view>, 4> shape_names{
     {BoundaryShape::star, "star"},
 }};
 
-// ---- small vector helpers -------------------------------------------------------------------
-
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 scaled(const Vec3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-bool finite(const Vec3& a) { return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]); }
-
-// Message text from pieces (strings and integers); avoids "literal" + std::string, on which g++ 12
-// emits a false -Wrestrict warning.
-void append_part(std::string& out, std::string_view part) { out += part; }
-template <std::integral T>
-void append_part(std::string& out, T number) {
-  out += std::to_string(number);
-}
-template <class Tag>
-void append_part(std::string& out, topology::Handle<Tag> handle) {
-  out += std::to_string(handle.idx());
-}
-template <class... Parts>
-std::string text(const Parts&... parts) {
-  std::string out;
-  (append_part(out, parts), ...);
-  return out;
-}
-
 std::string face_text(const topology::Triangle& f) { return text("(", f[0], ", ", f[1], ", ", f[2], ")"); }
-
-// ---- seeded choices, identical on every platform -------------------------------------------
-
-// SplitMix64's finaliser: spreads a seed and a counter over all 64 bits.
-std::uint64_t mix(std::uint64_t z) {
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
-// Uniform on [0, n), n >= 1, by rejection (std::uniform_int_distribution is not specified
-// bit for bit, this is): accept r >= 2^64 mod n, so that r mod n is unbiased.
-std::uint64_t draw_below(std::mt19937_64& rng, std::uint64_t n) {
-  const std::uint64_t reject_below = (0 - n) % n;
-  for (;;) {
-    const std::uint64_t r = rng();
-    if (r >= reject_below) return r % n;
-  }
-}
-
-// ---- the boundary surface, in local numbering ----------------------------------------------
-
-struct Surface {
-  std::vector<std::uint32_t> vertices;                  // global ids, ascending
-  std::vector<std::uint32_t> local;                     // global id -> local id, or invalid_index
-  std::vector<topology::Triangle> faces;                // local ids, outward
-  std::vector<std::vector<std::uint32_t>> neighbors;    // local adjacency over boundary edges, ascending
-};
-
-// Builds the surface; returns "" or why the boundary is not a closed, consistently oriented surface.
-std::string build_surface(const topology::TetMesh& mesh, Surface& s) {
-  const auto faces = topology::boundary_faces(mesh);
-  s.local.assign(mesh.num_vertices(), invalid_index);
-  for (const auto& f : faces)
-    for (auto v : f.face) s.local[v] = 0;
-  for (std::uint32_t v = 0; v < mesh.num_vertices(); ++v)
-    if (s.local[v] == 0) {
-      s.local[v] = static_cast<std::uint32_t>(s.vertices.size());
-      s.vertices.push_back(v);
-    }
-  // Each undirected edge must be in exactly two faces, once in each direction.
-  std::vector<std::array<std::uint32_t, 3>> directed;  // (min, max, 1 when listed min -> max)
-  for (const auto& f : faces) {
-    topology::Triangle t{topology::VertexId{s.local[f.face[0]]}, topology::VertexId{s.local[f.face[1]]}, topology::VertexId{s.local[f.face[2]]}};
-    s.faces.push_back(t);
-    for (int i = 0; i < 3; ++i) {
-      const auto a = t[std::size_t(i)], b = t[std::size_t((i + 1) % 3)];
-      directed.push_back({std::min(a, b), std::max(a, b), a < b ? 1u : 0u});
-    }
-  }
-  std::sort(directed.begin(), directed.end());
-  s.neighbors.assign(s.vertices.size(), {});
-  for (std::size_t i = 0; i < directed.size();) {
-    std::size_t j = i;
-    while (j < directed.size() && directed[j][0] == directed[i][0] && directed[j][1] == directed[i][1]) ++j;
-    const auto a = directed[i][0], b = directed[i][1];
-    if (j - i != 2 || directed[i][2] == directed[i + 1][2])
-      return text("boundary edge (", s.vertices[a], ", ", s.vertices[b], ") is in ", j - i, " boundary faces",
-                  j - i == 2 ? " listed in the same direction" : "", ": the boundary is not a closed oriented surface");
-    s.neighbors[a].push_back(b);
-    s.neighbors[b].push_back(a);
-    i = j;
-  }
-  for (auto& n : s.neighbors) std::sort(n.begin(), n.end());
-  return "";
-}
-
-// Shortest path from `from` to `to` over boundary edges, avoiding fixed vertices other than `to`
-// (Dijkstra; ties broken by vertex id, so the result is deterministic). Empty when none exists.
-// With `keep_apart`, a step onto a vertex next to a fixed one costs twice its length: a path then
-// keeps off the paths already fixed where it can, and leaves free vertices between them through
-// which the later paths still pass.
-std::vector<std::uint32_t> shortest_path(const Surface& s, const std::vector<Vec3>& src, const std::vector<char>& fixed,
-                                         std::uint32_t from, std::uint32_t to, bool keep_apart) {
-  const auto next_to_fixed = [&](std::uint32_t u) {
-    for (auto w : s.neighbors[u])
-      if (fixed[w] && w != to && w != from) return true;
-    return false;
-  };
-  const auto& adj = s.neighbors[from];
-  if (std::binary_search(adj.begin(), adj.end(), to)) return {from, to};
-  const std::size_t n = s.vertices.size();
-  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-  std::vector<std::uint32_t> prev(n, invalid_index);
-  using Item = std::pair<double, std::uint32_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  dist[from] = 0;
-  queue.push({0.0, from});
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > dist[v]) continue;
-    if (v == to) break;
-    for (auto u : s.neighbors[v]) {
-      if (fixed[u] && u != to) continue;
-      const double step = src.empty() ? 1.0 : norm(sub(src[u], src[v]));
-      const double du = d + (keep_apart && next_to_fixed(u) ? 2 * step : step);
-      if (du < dist[u]) {
-        dist[u] = du;
-        prev[u] = v;
-        queue.push({du, u});
-      }
-    }
-  }
-  if (prev[to] == invalid_index) return {};
-  std::vector<std::uint32_t> path{to};
-  while (path.back() != from) path.push_back(prev[path.back()]);
-  std::reverse(path.begin(), path.end());
-  return path;
-}
 
 // ---- Tutte embedding of the free vertices ----------------------------------------------------
 
@@ -353,209 +211,6 @@ double spread_weights(const Surface& s, const std::vector<Vec3>& src, const std:
   return worst;
 }
 
-// ---- one attempt -----------------------------------------------------------------------------
-
-const std::array<Vec3, 4>& tet_corners() {
-  static const std::array<Vec3, 4> corners{{
-      {std::sqrt(8.0) / 3, 0.0, -1.0 / 3},
-      {-std::sqrt(2.0) / 3, std::sqrt(2.0 / 3), -1.0 / 3},
-      {-std::sqrt(2.0) / 3, -std::sqrt(2.0 / 3), -1.0 / 3},
-      {0.0, 0.0, 1.0},
-  }};
-  return corners;
-}
-
-// Surface distances (Dijkstra, the source's edge lengths or unit lengths without a source) from
-// the nearest of `from`.
-std::vector<double> distances_from(const Surface& s, const std::vector<Vec3>& src,
-                                   std::span<const std::uint32_t> from) {
-  std::vector<double> dist(s.vertices.size(), std::numeric_limits<double>::infinity());
-  using Item = std::pair<double, std::uint32_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  for (auto v : from) {
-    dist[v] = 0;
-    queue.push({0.0, v});
-  }
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > dist[v]) continue;
-    for (auto u : s.neighbors[v]) {
-      const double du = d + (src.empty() ? 1.0 : norm(sub(src[u], src[v])));
-      if (du < dist[u]) {
-        dist[u] = du;
-        queue.push({du, u});
-      }
-    }
-  }
-  return dist;
-}
-
-// The vertex farthest from `from` among those with `allowed` set (all when empty; the lowest id
-// among equals; unreachable ones are skipped).
-std::uint32_t farthest_from(const Surface& s, const std::vector<Vec3>& src,
-                            std::span<const std::uint32_t> from, const std::vector<char>& allowed = {}) {
-  const auto dist = distances_from(s, src, from);
-  std::uint32_t best = from[0];
-  for (std::uint32_t v = 0; v < dist.size(); ++v)
-    if ((allowed.empty() || allowed[v]) && std::isfinite(dist[v]) &&
-        (best == from[0] || dist[v] > dist[best]))
-      best = v;
-  return best;
-}
-
-// The two ends of the surface's longest stretch found from a drawn start: {inner, outer} (which
-// end is which is not known, so `swap_ends` swaps them).
-std::array<std::uint32_t, 2> stretch_ends(const Surface& s, const std::vector<Vec3>& src, bool swap_ends,
-                                          std::mt19937_64& rng) {
-  const auto start = static_cast<std::uint32_t>(draw_below(rng, s.vertices.size()));
-  std::array<std::uint32_t, 2> ends{};
-  ends[1] = farthest_from(s, src, std::span(&start, 1));
-  ends[0] = farthest_from(s, src, std::span(ends.data() + 1, 1));
-  if (swap_ends) std::swap(ends[0], ends[1]);
-  return ends;
-}
-
-// CornerChoice::farthest: from a drawn vertex, the vertex farthest from it and the one farthest
-// from that: the two ends of the surface's longest stretch (the closed end of a tunnel or the tip
-// of a protrusion, typically, and a point far from its mouth). One end becomes corner 0, from
-// which three paths leave (fix_corner_paths), so that they run together down the stretch and
-// space its vertices along three of the tetrahedron's edges instead of crowding it into a face;
-// which end is the inner one is not known, so `swap_ends` swaps them. Corners 2 and 3 are taken
-// far out of the stretch: among the vertices at least 3/4 as far from corner 0 as corner 1 is
-// and, with a source, less than 3/2 as far from corner 1 over the surface as in space (a vertex
-// in a tunnel is much farther over the surface), the farthest from corner 1 and then from 1 and
-// 2 when `draw_rest` is false, drawn ones when it is true.
-std::array<std::uint32_t, 4> farthest_corners(const Surface& s, const std::vector<Vec3>& src, bool swap_ends,
-                                              bool draw_rest, std::mt19937_64& rng) {
-  const auto ends = stretch_ends(s, src, swap_ends, rng);
-  std::array<std::uint32_t, 4> c{ends[0], ends[1], 0, 0};
-  const auto from0 = distances_from(s, src, std::span(c.data(), 1));
-  const auto from1 = distances_from(s, src, std::span(c.data() + 1, 1));
-  std::vector<char> far_out(from0.size(), 0);
-  std::vector<std::uint32_t> candidates;
-  for (std::uint32_t v = 0; v < from0.size(); ++v) {
-    far_out[v] = std::isfinite(from0[v]) && from0[v] >= 0.75 * from0[c[1]] && v != c[1] &&
-                 (src.empty() || from1[v] < 1.5 * norm(sub(src[v], src[c[1]])));
-    if (far_out[v]) candidates.push_back(v);
-  }
-  if (candidates.size() < 2) return c;  // c[2] = c[3]: the caller draws instead
-  if (draw_rest) {
-    c[2] = candidates[draw_below(rng, candidates.size())];
-    c[3] = candidates[draw_below(rng, candidates.size())];
-  } else {
-    c[2] = farthest_from(s, src, std::span(c.data() + 1, 1), far_out);
-    c[3] = farthest_from(s, src, std::span(c.data() + 1, 2), far_out);
-  }
-  return c;
-}
-
-// stiff-tet with CornerChoice::farthest: corner 3, from which the three paths leave together, at
-// the inner end of the longest stretch, and corners 0, 1, 2 on a boundary triangle at its outer
-// end (the first one listed there).
-std::array<std::uint32_t, 4> farthest_stiff_corners(const Surface& s, const std::vector<Vec3>& src, bool swap_ends,
-                                                    std::mt19937_64& rng) {
-  const auto ends = stretch_ends(s, src, swap_ends, rng);
-  for (const auto& f : s.faces)
-    if (std::find(f.begin(), f.end(), ends[1]) != f.end()) return {f[0], f[1], f[2], ends[0]};
-  return {ends[0], ends[0], ends[0], ends[0]};  // not distinct: the caller draws instead
-}
-
-// Four distinct corners (local ids) for attempt `rng`.
-// CornerChoice::farthest alternates: farthest corners on even attempts (from different drawn
-// starts, which often lead to the same corners; every other time with the ends swapped), drawn
-// ones on odd attempts.
-std::array<std::uint32_t, 4> choose_corners(const Surface& s, const std::vector<Vec3>& src,
-                                            const BoundaryShapeSpec& spec, int attempt,
-                                            std::mt19937_64& rng) {
-  const BoundaryShape shape = spec.shape;
-  if (spec.corners == CornerChoice::farthest && attempt % 2 == 0) {
-    const auto c = shape == BoundaryShape::stiff_tet ? farthest_stiff_corners(s, src, attempt % 4 == 2, rng)
-                                                     : farthest_corners(s, src, attempt % 4 == 2, attempt >= 4, rng);
-    if (std::set<std::uint32_t>(c.begin(), c.end()).size() == 4) return c;
-  }
-  std::array<std::uint32_t, 4> c{};
-  int chosen = 0;
-  if (shape == BoundaryShape::stiff_tet) {
-    const auto& f = s.faces[draw_below(rng, s.faces.size())];
-    c = {f[0], f[1], f[2], 0};
-    chosen = 3;
-  }
-  while (chosen < 4) {
-    const auto v = static_cast<std::uint32_t>(draw_below(rng, s.vertices.size()));
-    if (std::find(c.begin(), c.begin() + chosen, v) == c.begin() + chosen) c[std::size_t(chosen++)] = v;
-  }
-  return c;
-}
-
-// Fixes the inner vertices of `path` (from corner `a` to corner `b`) on the tetrahedron's edge
-// between them, evenly spaced.
-void place_on_edge(const std::vector<std::uint32_t>& path, std::size_t a, std::size_t b, std::vector<char>& fixed,
-                   std::vector<Vec3>& pos) {
-  const auto& tet = tet_corners();
-  const std::size_t m = path.size() - 2;  // inner vertices
-  for (std::size_t k = 1; k <= m; ++k) {
-    const double t = double(k) / double(m + 1);
-    fixed[path[k]] = 1;
-    for (std::size_t i = 0; i < 3; ++i) pos[path[k]][i] = (1 - t) * tet[a][i] + t * tet[b][i];
-  }
-}
-
-// Farthest corners: the three paths from the hub corner (the inner end of a tunnel or protrusion:
-// corner 0, or corner 3 for stiff-tet) together, as disjoint paths of least total length, which
-// exist on every triangulated sphere; one after another, the first two shortest paths down a
-// narrow tunnel can leave the third no way in.
-std::string fix_paths_from_hub(const Surface& s, const std::vector<Vec3>& src, const std::array<std::uint32_t, 4>& corners,
-                               std::size_t hub, std::vector<char>& fixed, std::vector<Vec3>& pos) {
-  const auto length = [&](std::uint32_t u, std::uint32_t v) { return src.empty() ? 1.0 : norm(sub(src[u], src[v])); };
-  const std::vector<char> none(s.vertices.size(), 0);
-  std::array<std::size_t, 3> others{};
-  std::array<std::uint32_t, 3> targets{};
-  for (std::size_t j = 0, k = 0; j < 4; ++j)
-    if (j != hub) {
-      others[k] = j;
-      targets[k++] = corners[j];
-    }
-  const auto paths = disjoint_paths(s.neighbors, length, corners[hub], targets, none);
-  if (paths.empty()) return text("no three disjoint boundary paths from corner ", s.vertices[corners[hub]]);
-  for (std::size_t k = 0; k < 3; ++k) place_on_edge(paths[k], hub, others[k], fixed, pos);
-  return "";
-}
-
-// Steps 1 and 2 of the construction: the corners go to the tetrahedron's corners, the paths
-// between them to its edges; marks them fixed. "" or why it failed. Drawn corners: the paths
-// one after another, 1-0, 2-0, 2-1, 3-0, 3-1, 3-2. Farthest corners (keep_apart): the three
-// into the hub corner first (fix_paths_from_hub: corner 0, or 3 for stiff-tet), then the other
-// three, each of which cuts a face off the disc that remains.
-std::string fix_corner_paths(const Surface& s, const std::vector<Vec3>& src, const std::array<std::uint32_t, 4>& corners,
-                             bool keep_apart, bool stiff, std::vector<char>& fixed, std::vector<Vec3>& pos) {
-  const auto& tet = tet_corners();
-  const std::size_t n = s.vertices.size();
-  fixed.assign(n, 0);
-  pos.assign(n, Vec3{0, 0, 0});
-  for (std::size_t j = 0; j < 4; ++j) {
-    fixed[corners[j]] = 1;
-    pos[corners[j]] = tet[j];
-  }
-  using Pair = std::array<std::size_t, 2>;
-  static constexpr std::array<Pair, 6> drawn_order{{{1, 0}, {2, 0}, {2, 1}, {3, 0}, {3, 1}, {3, 2}}};
-  static constexpr std::array<Pair, 3> after_hub0{{{2, 1}, {3, 1}, {3, 2}}};
-  static constexpr std::array<Pair, 3> after_hub3{{{1, 0}, {2, 0}, {2, 1}}};
-  if (keep_apart) {
-    if (auto why = fix_paths_from_hub(s, src, corners, stiff ? 3 : 0, fixed, pos); !why.empty()) return why;
-  }
-  const std::span<const Pair> order = !keep_apart ? std::span<const Pair>(drawn_order)
-                                      : stiff     ? std::span<const Pair>(after_hub3)
-                                                  : std::span<const Pair>(after_hub0);
-  for (const auto& [j, i] : order) {
-    const auto path = shortest_path(s, src, fixed, corners[j], corners[i], keep_apart);
-    if (path.empty())
-      return text("no free boundary path between corners ", s.vertices[corners[j]], " and ", s.vertices[corners[i]]);
-    place_on_edge(path, j, i, fixed, pos);
-  }
-  return "";
-}
-
 // Inside-out (the corners' cyclic order is the mirror image)? Reflect y -> -y: exact, and it
 // maps the tetrahedron onto itself.
 void orient_outward(const Surface& s, std::vector<Vec3>& pos) {
@@ -618,8 +273,12 @@ GeneratedBoundary failure(std::string message, int attempts = 0) {
 }
 
 }  // namespace
+}  // namespace cmx::generators::detail
+
+namespace cmx::generators {
 
 const char* shape_name(BoundaryShape shape) {
+  using namespace detail;
   for (const auto& [s, name] : shape_names)
     if (s == shape) return name.data();
   return "?";
@@ -632,6 +291,7 @@ std::optional<CornerChoice> parse_corner_choice(std::string_view text) {
 }
 
 std::optional<BoundaryShapeSpec> parse_boundary_shape(std::string_view text) {
+  using namespace detail;
   const auto colon = text.find(':');
   const std::string_view name = text.substr(0, colon);
   BoundaryShapeSpec spec;
@@ -648,13 +308,15 @@ std::optional<BoundaryShapeSpec> parse_boundary_shape(std::string_view text) {
 }
 
 std::string to_string(const BoundaryShapeSpec& spec) {
+  using namespace detail;
   std::string name = shape_name(spec.shape);
   if (spec.shape == BoundaryShape::star || spec.seed != default_seed) name += text(":", spec.seed);
   return name;
 }
 
-GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::vector<Vec3>& source,
+GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::vector<std::array<double, 3>>& source,
                                     const BoundaryShapeSpec& spec) {
+  using namespace detail;
   if (!source.empty() && source.size() != mesh.num_vertices())
     return failure(text("the mesh has ", mesh.num_vertices(), " vertices but ", source.size(), " source positions were given"));
   for (std::size_t v = 0; v < source.size(); ++v)
@@ -691,6 +353,7 @@ GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::ve
 }
 
 std::string check_star_shaped_about_origin(const topology::TetMesh& mesh, const GeneratedBoundary& boundary) {
+  using namespace detail;
   if (boundary.positions.size() != boundary.vertices.size())
     return text(boundary.vertices.size(), " vertices but ", boundary.positions.size(), " positions");
   std::vector<std::uint32_t> slot(mesh.num_vertices(), invalid_index);
