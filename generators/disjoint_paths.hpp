@@ -1,7 +1,7 @@
 #pragma once
 // Vertex-disjoint paths of least total length from one vertex of a graph to several others.
 //
-// The boundary construction (generators/boundary_shapes.cpp) needs three paths from one corner
+// The boundary construction (generators/boundary_corners.cpp) needs three paths from one corner
 // to the other three that share no vertex but that corner. Found one after another, the first
 // two can wall off the third (two shortest paths down a narrow tunnel leave no free vertex
 // between them); found together as a min-cost flow they exist whenever the graph allows them,
