@@ -71,7 +71,7 @@ struct ExpansionOutcome {
 // each time the cluster has halved since the last copy, and when the cluster exceeds twice the
 // size it had at the copy plus 64, or refinement has added more than 16 vertices per cluster vertex
 // of the copy plus 1,024 without halving it (a churn that does not grow the cluster, seen on the
-// same ball), or 512 + L / 8 expansions have not made the cluster smaller than its smallest
+// same ball), or 1,024 + L / 4 expansions have not made the cluster smaller than its smallest
 // size L in this attempt (a stall: on Furch's knotted hole the refinement expands only the
 // vertices it pushed itself while the bits grow, up to the time limit), it goes back to the copy
 // and continues with the tie-breaks of random:K (K = 1, 2, ...), at most max_restarts times;

@@ -506,7 +506,7 @@ TEST_CASE("cmx map on Furch's knotted hole stalls, finds a NOBUENOSS ahead and e
   CHECK(r.err.find("stalled: ") != std::string::npos);
   CHECK(r.err.find("NOBUENOSS ahead: topological expansion from the cluster mesh left stops at one") != std::string::npos);
   // "the last N expansions never left fewer than ...": N is one of the early checks, below the
-  // stall bound of 512 + L/8.
+  // stall bound of 1,024 + L/4.
   const std::size_t last = r.err.find("the last ");
   REQUIRE(last != std::string::npos);
   const int stalled_for = std::atoi(r.err.c_str() + last + 9);
