@@ -15,6 +15,11 @@ namespace cmx::algorithm::tuning {
 // factorisation always runs. The shared cases need at most 5.2e7 (moai): far below any budget.
 inline constexpr double tutte_multiply_adds_per_second = 1e9;
 
+// Passes of the re-map from doubles (local/remap_doubles.hpp): each maps again from the last
+// pass's doubles while the count of inverted or flat tets falls. Most maps need none, the
+// shared cases at most one; the third is a margin, each pass costs about one star map.
+inline constexpr std::size_t doubles_remap_passes = 3;
+
 // Refinement budget of one run: beyond max(floor, per_input_vertex x input vertices) vertices the
 // loop stops as stuck: a run that refines a mesh fifty-fold has gone astray (growth on real
 // meshes is a few percent, bench/RESULTS.md); the floor keeps tiny inputs from stopping early.

@@ -1,8 +1,11 @@
 #include "algorithm/local/remap_doubles.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 
+#include "algorithm/run_control.hpp"
+#include "algorithm/tuning.hpp"
 #include "algorithm/verify/output_statistics.hpp"
 #include "arith/rounding.hpp"
 #include "topology/complex_queries.hpp"
@@ -55,22 +58,56 @@ MapStatistics merged_statistics(const MapResult& r, const MapResult& again, std:
 
 }  // namespace
 
+namespace {
+
+std::size_t bad_doubles(const MapResult& r) { return r.doubles.check.inverted + r.doubles.check.degenerate; }
+
+}  // namespace
+
+RemapStep after_remap_pass(std::size_t passes, std::size_t fewest_bad, const MapResult& again) {
+  if (again.outcome != MapOutcome::success || again.doubles.stopped_at_deadline || !again.doubles.checked)
+    return RemapStep::stop;
+  if (again.doubles.check.valid()) return RemapStep::adopt;
+  return bad_doubles(again) < fewest_bad && passes < tuning::doubles_remap_passes ? RemapStep::go_on
+                                                                                  : RemapStep::stop;
+}
+
 void remap_from_doubles(const MapOptions& options, const VerificationInput& in, double time_left, MapResult& r) {
-  const std::size_t bad = r.doubles.check.inverted + r.doubles.check.degenerate;
+  const RunControl::Clock::time_point start = RunControl::Clock::now();
+  const std::size_t bad = bad_doubles(r);
   MapOptions second = options;
   second.init = InitialMapKind::given;
   second.remap_doubles = false;
-  second.time_limit_seconds = time_left;
   const std::string before = r.stats.local.fallback.empty() ? "" : r.stats.local.fallback + "; ";
   const std::string what = before + "the doubles left " + std::to_string(bad) + " tets inverted or flat; ";
-  MapResult again = map_to_domain(problem_from_doubles(r), second);
-  if (!(again.outcome == MapOutcome::success && again.doubles.check.valid())) {
-    r.stats.local.fallback = what + "re-mapping from them gave no valid doubles either";
+  // A pass that leaves fewer bad tets but some is the start of the next: its stars are smaller,
+  // around what it left (a different stall or order in one star's map can leave a crowd of its
+  // own, bench/results/issue21-thin-combinatorial.md). Passes end when the count stops falling.
+  std::optional<MapResult> last;
+  std::size_t passes = 0, last_bad = bad;
+  for (RemapStep step = RemapStep::go_on; step == RemapStep::go_on;) {
+    second.time_limit_seconds = 0;
+    if (time_left > 0) {
+      second.time_limit_seconds = time_left - seconds_since(start);
+      if (second.time_limit_seconds <= 0) break;
+    }
+    MapResult again = map_to_domain(problem_from_doubles(last ? *last : r), second);
+    step = after_remap_pass(++passes, last_bad, again);
+    if (step == RemapStep::stop) break;
+    last_bad = bad_doubles(again);
+    last = std::move(again);
+  }
+  const std::string in_passes = passes > 1 ? " in " + std::to_string(passes) + " passes" : "";
+  if (!last || !last->doubles.check.valid()) {
+    r.stats.local.fallback = what + "re-mapping from them" + in_passes + " gave no valid doubles either" +
+                             (last ? " (the best left " + std::to_string(last_bad) + ")" : "");
     return;
   }
+  MapResult& again = *last;
   MapStatistics s = merged_statistics(r, again,
-                                      what + "re-mapped from them (" + std::to_string(again.stats.local.stars) +
-                                          " stars, " + std::to_string(again.stats.local.tets_in_stars) + " tets)");
+                                      what + "re-mapped from them" + in_passes + " (" +
+                                          std::to_string(again.stats.local.stars) + " stars, " +
+                                          std::to_string(again.stats.local.tets_in_stars) + " tets)");
   r.tets = std::move(again.tets);
   r.source = std::move(again.source);
   r.target = std::move(again.target);

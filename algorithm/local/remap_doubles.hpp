@@ -20,10 +20,18 @@ bool wants_remap_from_doubles(const MapOptions& options, const MapResult& r);
 // double of r's target.
 MapProblem problem_from_doubles(const MapResult& r);
 
-// Runs the second pass with `options` (init given, no third pass, the time limit replaced by
-// `time_left` seconds, 0 for none) and keeps its map when its doubles are valid, verified against the original problem
-// `in`; else `r` stands. Either way r.stats.local.fallback says what was done. Throws
-// MapError(internal) when a kept map fails verification.
+// After the re-map's pass number `passes` (1 for the first) gave `again`: adopt it (its doubles
+// are valid), go on from its doubles (fewer inverted or flat tets than `fewest_bad`, the fewest
+// so far, and fewer than tuning::doubles_remap_passes passes run), or stop (no map, doubles cut
+// by the time limit or unchecked, no progress, no pass left).
+enum class RemapStep { adopt, go_on, stop };
+RemapStep after_remap_pass(std::size_t passes, std::size_t fewest_bad, const MapResult& again);
+
+// Runs the second pass with `options` (init given, no re-map inside it, the time limit replaced
+// by what is left of `time_left` seconds, 0 for none), from the doubles of the last pass while
+// after_remap_pass says go on, and keeps the last map when its doubles are valid, verified
+// against the original problem `in`; else `r` stands. Either way r.stats.local.fallback says what
+// was done. Throws MapError(internal) when a kept map fails verification.
 void remap_from_doubles(const MapOptions& options, const VerificationInput& in, double time_left, MapResult& r);
 
 }  // namespace cmx::algorithm

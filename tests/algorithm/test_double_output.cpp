@@ -13,6 +13,7 @@
 #include "algorithm/problem/validate_problem.hpp"
 #include "algorithm/map.hpp"
 #include "algorithm/run_control.hpp"
+#include "algorithm/tuning.hpp"
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
 #include "map_test_util.hpp"
@@ -320,4 +321,27 @@ TEST_CASE("a crowded map re-mapped from its own nearest doubles: valid doubles, 
   CHECK(recount(r.tets, r.doubles.target).inverted == 0);
   CHECK(r.stats.local.stars >= 1);
   CHECK(r.stats.local.fallback.find("re-mapped from them") != std::string::npos);
+}
+
+// The passes of the re-map: each goes on from the last one's doubles only while the count of
+// inverted or flat tets falls, and at most tuning::doubles_remap_passes of them run.
+TEST_CASE("re-map passes: adopt valid doubles, go on while the bad tets fall, else stop") {
+  MapResult again;
+  again.outcome = MapOutcome::success;
+  again.doubles.checked = true;
+  CHECK(after_remap_pass(1, 409, again) == RemapStep::adopt);  // nothing inverted or flat
+  again.doubles.check.inverted = 100;
+  again.doubles.check.degenerate = 20;
+  CHECK(after_remap_pass(1, 409, again) == RemapStep::go_on);
+  CHECK(after_remap_pass(1, 120, again) == RemapStep::stop);  // no fewer than before
+  CHECK(after_remap_pass(1, 121, again) == RemapStep::go_on);
+  CHECK(after_remap_pass(tuning::doubles_remap_passes, 409, again) == RemapStep::stop);
+  again.doubles.stopped_at_deadline = true;
+  CHECK(after_remap_pass(1, 409, again) == RemapStep::stop);
+  again.doubles.stopped_at_deadline = false;
+  again.outcome = MapOutcome::stuck;
+  CHECK(after_remap_pass(1, 409, again) == RemapStep::stop);
+  again.outcome = MapOutcome::success;
+  again.doubles.checked = false;
+  CHECK(after_remap_pass(1, 409, again) == RemapStep::stop);
 }
