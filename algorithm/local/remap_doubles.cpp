@@ -41,8 +41,9 @@ MapProblem problem_from_doubles(const MapResult& r) {
 
 namespace {
 
-// r's statistics with the second pass's local repair, double output and time added.
-MapStatistics merged_statistics(const MapResult& r, const MapResult& again, std::string fallback) {
+// r's statistics with the last pass's local repair and double output, and the passes' time added.
+// `seconds` is the time of every pass, the last one's included.
+MapStatistics merged_statistics(const MapResult& r, const MapResult& again, std::string fallback, double seconds) {
   MapStatistics s = r.stats;
   s.local = again.stats.local;
   s.local.init = r.stats.local.init;
@@ -52,7 +53,7 @@ MapStatistics merged_statistics(const MapResult& r, const MapResult& again, std:
   s.collapsed += again.stats.collapsed;
   s.chebyshev_moves = again.stats.chebyshev_moves, s.snap_repaired = again.stats.snap_repaired;
   s.snap_rounds = again.stats.snap_rounds, s.snap_exact_rounds = again.stats.snap_exact_rounds;
-  s.seconds_double += again.stats.seconds_total;
+  s.seconds_double += seconds;
   return s;
 }
 
@@ -85,6 +86,7 @@ void remap_from_doubles(const MapOptions& options, const VerificationInput& in, 
   // own, bench/results/issue21-thin-combinatorial.md). Passes end when the count stops falling.
   std::optional<MapResult> last;
   std::size_t passes = 0, last_bad = bad;
+  std::string counts = std::to_string(bad);  // inverted or flat tets after each pass
   for (RemapStep step = RemapStep::go_on; step == RemapStep::go_on;) {
     second.time_limit_seconds = 0;
     if (time_left > 0) {
@@ -93,11 +95,14 @@ void remap_from_doubles(const MapOptions& options, const VerificationInput& in, 
     }
     MapResult again = map_to_domain(problem_from_doubles(last ? *last : r), second);
     step = after_remap_pass(++passes, last_bad, again);
+    if (again.outcome == MapOutcome::success && again.doubles.checked)
+      counts += " -> " + std::to_string(bad_doubles(again));
     if (step == RemapStep::stop) break;
     last_bad = bad_doubles(again);
     last = std::move(again);
   }
-  const std::string in_passes = passes > 1 ? " in " + std::to_string(passes) + " passes" : "";
+  const std::string in_passes =
+      passes > 1 ? " in " + std::to_string(passes) + " passes (inverted or flat: " + counts + ")" : "";
   if (!last || !last->doubles.check.valid()) {
     r.stats.local.fallback = what + "re-mapping from them" + in_passes + " gave no valid doubles either" +
                              (last ? " (the best left " + std::to_string(last_bad) + ")" : "");
@@ -107,7 +112,8 @@ void remap_from_doubles(const MapOptions& options, const VerificationInput& in, 
   MapStatistics s = merged_statistics(r, again,
                                       what + "re-mapped from them" + in_passes + " (" +
                                           std::to_string(again.stats.local.stars) + " stars, " +
-                                          std::to_string(again.stats.local.tets_in_stars) + " tets)");
+                                          std::to_string(again.stats.local.tets_in_stars) + " tets)",
+                                      seconds_since(start));
   r.tets = std::move(again.tets);
   r.source = std::move(again.source);
   r.target = std::move(again.target);
