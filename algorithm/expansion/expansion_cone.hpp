@@ -10,7 +10,8 @@
 //
 // Near p_c the base constraints are slack (the base tets are positive with v at p_c), so the
 // kernel has interior exactly when the side planes, all through p_c, leave an open cone of
-// directions: that is what star-shapification (star_shapify.hpp) restores.
+// directions: that is what star-shapification (bends and pushes, expansion/cluster_expander.hpp)
+// restores.
 #include <array>
 #include <cstddef>
 #include <optional>
