@@ -98,7 +98,7 @@ std::vector<Triangle> flipped_disc(std::uint32_t n, std::uint32_t seed, int flip
 
 }  // namespace
 
-TEST_CASE("is_disc: a grid is a disc; a pinched pair, a bowtie and an annulus are not") {
+TEST_CASE("is_disc: a grid is a disc, a pinched pair, a bowtie and an annulus are not") {
   CHECK(cmx::topology::is_disc(grid_disc(4, 1)));
   CHECK(cmx::topology::is_disc(std::vector<Triangle>{{VertexId{0}, VertexId{1}, VertexId{2}}}));
   // Two triangles sharing a vertex only: a bowtie.
@@ -141,7 +141,7 @@ TEST_CASE("disc shelling: both kinds of step occur, and a free edge is never tak
   check_replay(disc, VertexId{14}, s);
 }
 
-TEST_CASE("disc shelling: the star alone needs no step; bad inputs are named, not shelled") {
+TEST_CASE("disc shelling: the star alone needs no step, and bad inputs are named, not shelled") {
   // A hexagon fan around vertex 0.
   std::vector<Triangle> fan;
   for (std::uint32_t i = 1; i <= 6; ++i) fan.push_back({VertexId{0}, VertexId{i}, VertexId{i % 6 + 1}});
