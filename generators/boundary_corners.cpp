@@ -14,6 +14,42 @@ namespace {
 
 using topology::invalid_index;
 
+// Dijkstra over boundary edges from every vertex of `from` (each at distance 0), a step from v
+// to u costing cost(v, u) (infinity: not taken); it stops once `stop` is settled (invalid_index:
+// never). Ties are broken by vertex id, so the result is deterministic.
+struct SurfaceDistances {
+  std::vector<double> dist;
+  std::vector<std::uint32_t> prev;  // invalid_index where unreached, and at the sources
+};
+template <class Cost>
+SurfaceDistances surface_dijkstra(const Surface& s, std::span<const std::uint32_t> from, Cost cost,
+                                  std::uint32_t stop = invalid_index) {
+  const std::size_t n = s.vertices.size();
+  SurfaceDistances out{std::vector<double>(n, std::numeric_limits<double>::infinity()),
+                       std::vector<std::uint32_t>(n, invalid_index)};
+  using Item = std::pair<double, std::uint32_t>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (auto v : from) {
+    out.dist[v] = 0;
+    queue.push({0.0, v});
+  }
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > out.dist[v]) continue;
+    if (v == stop) break;
+    for (auto u : s.neighbors[v]) {
+      const double du = d + cost(v, u);
+      if (du < out.dist[u]) {
+        out.dist[u] = du;
+        out.prev[u] = v;
+        queue.push({du, u});
+      }
+    }
+  }
+  return out;
+}
+
 // Shortest path from `from` to `to` over boundary edges, avoiding fixed vertices other than `to`
 // (Dijkstra; ties broken by vertex id, so the result is deterministic). Empty when none exists.
 // With `keep_apart`, a step onto a vertex next to a fixed one costs twice its length: a path then
@@ -28,35 +64,19 @@ std::vector<std::uint32_t> shortest_path(const Surface& s, const std::vector<Vec
   };
   const auto& adj = s.neighbors[from];
   if (std::binary_search(adj.begin(), adj.end(), to)) return {from, to};
-  const std::size_t n = s.vertices.size();
-  std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-  std::vector<std::uint32_t> prev(n, invalid_index);
-  using Item = std::pair<double, std::uint32_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  dist[from] = 0;
-  queue.push({0.0, from});
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > dist[v]) continue;
-    if (v == to) break;
-    for (auto u : s.neighbors[v]) {
-      if (fixed[u] && u != to) continue;
-      const double step = src.empty() ? 1.0 : norm(sub(src[u], src[v]));
-      const double du = d + (keep_apart && next_to_fixed(u) ? 2 * step : step);
-      if (du < dist[u]) {
-        dist[u] = du;
-        prev[u] = v;
-        queue.push({du, u});
-      }
-    }
-  }
+  const auto cost = [&](std::uint32_t v, std::uint32_t u) {
+    if (fixed[u] && u != to) return std::numeric_limits<double>::infinity();
+    const double step = src.empty() ? 1.0 : norm(sub(src[u], src[v]));
+    return keep_apart && next_to_fixed(u) ? 2 * step : step;
+  };
+  const std::vector<std::uint32_t> prev = surface_dijkstra(s, std::span(&from, 1), cost, to).prev;
   if (prev[to] == invalid_index) return {};
   std::vector<std::uint32_t> path{to};
   while (path.back() != from) path.push_back(prev[path.back()]);
   std::reverse(path.begin(), path.end());
   return path;
 }
+
 const std::array<Vec3, 4>& tet_corners() {
   static const std::array<Vec3, 4> corners{{
       {std::sqrt(8.0) / 3, 0.0, -1.0 / 3},
@@ -71,26 +91,8 @@ const std::array<Vec3, 4>& tet_corners() {
 // the nearest of `from`.
 std::vector<double> distances_from(const Surface& s, const std::vector<Vec3>& src,
                                    std::span<const std::uint32_t> from) {
-  std::vector<double> dist(s.vertices.size(), std::numeric_limits<double>::infinity());
-  using Item = std::pair<double, std::uint32_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  for (auto v : from) {
-    dist[v] = 0;
-    queue.push({0.0, v});
-  }
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > dist[v]) continue;
-    for (auto u : s.neighbors[v]) {
-      const double du = d + (src.empty() ? 1.0 : norm(sub(src[u], src[v])));
-      if (du < dist[u]) {
-        dist[u] = du;
-        queue.push({du, u});
-      }
-    }
-  }
-  return dist;
+  const auto length = [&](std::uint32_t v, std::uint32_t u) { return src.empty() ? 1.0 : norm(sub(src[u], src[v])); };
+  return surface_dijkstra(s, from, length).dist;
 }
 
 // The vertex farthest from `from` among those with `allowed` set (all when empty; the lowest id
