@@ -48,7 +48,8 @@ MapStatistics merged_statistics(const MapResult& r, const MapResult& again, std:
   s.local = again.stats.local;
   s.local.init = r.stats.local.init;
   s.local.fallback = std::move(fallback);
-  // The star figures are the re-map's (what it re-mapped); the initial map's time is both passes'.
+  // The star figures are the last pass's (what it re-mapped); the initial map's time is the first
+  // map's and the last pass's.
   s.local.seconds_init += r.stats.local.seconds_init;
   s.collapsed += again.stats.collapsed;
   s.chebyshev_moves = again.stats.chebyshev_moves, s.snap_repaired = again.stats.snap_repaired;
@@ -56,10 +57,6 @@ MapStatistics merged_statistics(const MapResult& r, const MapResult& again, std:
   s.seconds_double += seconds;
   return s;
 }
-
-}  // namespace
-
-namespace {
 
 std::size_t bad_doubles(const MapResult& r) { return r.doubles.check.inverted + r.doubles.check.degenerate; }
 
