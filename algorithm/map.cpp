@@ -120,6 +120,7 @@ ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_poin
   settings.trace = options.trace;
   settings.smooth_every = options.smooth_every;
   settings.collapse_after_refinement = options.collapse_refinement;
+  settings.shelled = options.shelled;
   settings.subcluster_size = options.subclusters;
   settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior
   settings.input_vertices = input_vertices;

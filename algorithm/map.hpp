@@ -45,6 +45,14 @@ struct MapProblem {
 // doubles are not a valid map (its result kept only if its doubles are valid).
 enum class InitialMapKind : std::uint8_t { shrink, tutte, given, automatic };
 std::optional<InitialMapKind> parse_initial_map_kind(std::string_view name);
+
+// When the expansion loop star-shapifies by shelling the cone base
+// (refinement/shelled_star_shapify.cpp): when_stuck, the fallback, only in a last round once every
+// candidate has failed everything else; after_pushes wherever bends and pushes failed; first
+// before bends and pushes. The names are those of cmx map --shelled.
+enum class ShelledMode : std::uint8_t { when_stuck, after_pushes, first };
+std::optional<ShelledMode> parse_shelled_mode(std::string_view name);
+std::string_view to_string(ShelledMode m);
 const char* to_string(InitialMapKind kind);
 
 // What the progress callback gets. During the expansion: the cluster counts below. In later
@@ -91,6 +99,7 @@ struct MapOptions {
   bool remap_doubles = true;
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
   bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)
+  ShelledMode shelled = ShelledMode::when_stuck;  // when the loop star-shapifies by shelling
   std::size_t subclusters = 4;                // largest subcluster expanded at once, 2..4 (Sec. 4.2.5); 0 or 1: off
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
   // Polled between steps of every phase with the phase's name ("expansion", "collapse",
@@ -151,6 +160,9 @@ struct MapStatistics {
   std::size_t k_manifold[4] = {0, 0, 0, 0};   // expansions of k-manifold-expandable vertices (k=1..3; [0]: other)
   std::size_t pushes = 0;                     // vertices pushed into the cluster (star-shapification)
   std::size_t bends = 0;                      // spoke splits of star-shapification (new expanded vertices)
+  // The fallback star-shapification (refinement/shelled_star_shapify.cpp): expansions whose base
+  // was shelled onto its witness, and the base edges it split at their midpoints on the way.
+  std::size_t shelled_star_shapifications = 0, base_edge_splits = 0;
   std::size_t relaxations = 0;                // expanded vertices re-centred in their star's kernel
   std::size_t smoothing_moves = 0;            // Laplacian moves kept (paper Sec. 4.2.4)
   std::size_t inflation_splits = 0;

@@ -3,6 +3,7 @@
 
 #include "algorithm/doubles/double_output.hpp"
 #include "algorithm/expansion/placement.hpp"
+#include "algorithm/map.hpp"
 
 namespace cmx::algorithm {
 namespace {
@@ -16,7 +17,18 @@ constexpr OptionNames<PrecisionPolicy, 4> precision_policy_names{{{{PrecisionPol
                                                                    {PrecisionPolicy::shift, "shift"},
                                                                    {PrecisionPolicy::segment, "segment"}}}};
 
+constexpr OptionNames<ShelledMode, 3> shelled_mode_names{{{{ShelledMode::when_stuck, "when-stuck"},
+                                                         {ShelledMode::after_pushes, "after-pushes"},
+                                                         {ShelledMode::first, "first"}}}};
+
 }  // namespace
+
+std::optional<ShelledMode> parse_shelled_mode(std::string_view name) {
+  return shelled_mode_names.parse(name);
+}
+std::string_view to_string(ShelledMode m) {
+  return shelled_mode_names.name(m);
+}
 
 std::optional<SnapPolicy> parse_snap_policy(std::string_view name) {
   return snap_policy_names.parse(name);

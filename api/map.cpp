@@ -63,6 +63,8 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
     return bad("filter", in.filter, filter ? "is not exact (naive is for benchmarks only)" : why);
   const auto order = topology::parse_expansion_order(in.order);
   if (!order) return bad("order", in.order, "is not an expansion order (priority, index, random:SEED)");
+  const auto shelled = algorithm::parse_shelled_mode(in.shelled);
+  if (!shelled) return bad("shelled", in.shelled, "is not a shelled star-shapification mode (when-stuck, after-pushes, first)");
   const auto snap = algorithm::parse_snap_policy(in.snap);
   if (!snap) return bad("snap", in.snap, "is not a snap policy (repair, chebyshev, nearest, none)");
   const auto precision = algorithm::parse_precision_policy(in.precision);
@@ -94,6 +96,7 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
   out.merge = in.merge;
   out.flip_collapse = in.flip_collapse;
   out.collapse_refinement = in.collapse_refinement;
+  out.shelled = *shelled;
   out.check = in.check;
   out.init = *init;
   out.combinatorial = in.combinatorial;

@@ -18,7 +18,7 @@ const HelpText help = {
     "               [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
     "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
-    "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--subclusters N]\n"
+    "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--shelled MODE] [--subclusters N]\n"
     "               [--combinatorial] [--quiet] [--version]\n",
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
     "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
@@ -36,6 +36,17 @@ const HelpText help = {
 
 std::string one_of(const std::string& what, const std::string& text, const std::string& choices) {
   return "unknown " + what + " '" + text + "' (" + choices + ")";
+}
+
+// The parser of an option that takes one of a name table's values (algorithm/option_names.hpp):
+// the value, or an error that lists the choices.
+template <class Parse>
+auto one_of_table(const char* what, Parse parse, const char* choices) {
+  return [=](const std::string& text) {
+    const auto value = parse(text);
+    if (!value) throw std::invalid_argument(one_of(what, text, choices));
+    return *value;
+  };
 }
 
 void add_problem_options(CLI::App& app, MapArgs& a) {
@@ -124,6 +135,13 @@ void add_run_options(CLI::App& app, MapArgs& a) {
                "do not collapse, right after each star-shapification, the vertices it\n"
                "added (by default they are collapsed wherever every invariant\n"
                "survives: paper Sec. 4.2.2)");
+  const auto shelled = one_of_table("shelled mode", algorithm::parse_shelled_mode, "when-stuck, after-pushes, first");
+  add_parsed(app, "--shelled", a.options.shelled, shelled,
+             "when to star-shapify by shelling the cone base onto its witness's\n"
+             "star (default when-stuck: the fallback, once every candidate has failed\n"
+             "everything else); after-pushes: wherever bends and pushes failed;\n"
+             "first: before bends and pushes (these two are for tests and comparisons)")
+      ->type_name("MODE");
 }
 
 // --init and --threads: where the target starts, and how many stars are mapped at once.
@@ -168,11 +186,8 @@ void add_expansion_options(CLI::App& app, MapArgs& a) {
              "keeps its state (paper Sec. 4.2.4; default 0: off; at most 1000000)")
       ->type_name("N");
   add_order_option(app, a.options.order, "expansion order: priority (default: paper Sec. 4.1.2), index,\nrandom:SEED");
-  const auto precision = [](const std::string& text) {
-    const auto p = algorithm::parse_precision_policy(text);
-    if (!p) throw std::invalid_argument(one_of("precision policy", text, "dyadic, shift, segment, none"));
-    return *p;
-  };
+  const auto precision =
+      one_of_table("precision policy", algorithm::parse_precision_policy, "dyadic, shift, segment, none");
   add_parsed(app, "--precision", a.options.placement.precision, precision,
              "precision reduction of new positions (default dyadic)")
       ->type_name("P");
@@ -182,11 +197,7 @@ void add_arithmetic_options(CLI::App& app, MapArgs& a) {
   add_filter_option(app, a.options.filter, false, "predicate arithmetic: cascade (default), interval, exact,\nmpfr:BITS (all exact)");
   add_lp_option(app, a.options.placement.lp.backend, "LP backend: certified (default), exact, glpk (if built)");
   add_norm_option(app, a.options.placement.lp.norm, "Chebyshev row weights: l2-upper (default), l1");
-  const auto snap = [](const std::string& text) {
-    const auto p = algorithm::parse_snap_policy(text);
-    if (!p) throw std::invalid_argument(one_of("snap policy", text, "repair, chebyshev-pass, nearest, none"));
-    return *p;
-  };
+  const auto snap = one_of_table("snap policy", algorithm::parse_snap_policy, "repair, chebyshev-pass, nearest, none");
   add_parsed(app, "--snap", a.options.snap, snap,
              "double output (default repair): repair = the nearest doubles if they\n"
              "are valid, else chebyshev-pass, then open the crowds of vertices\n"

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "algorithm/expansion/candidate_queue.hpp"
@@ -143,6 +144,34 @@ class ClusterExpander {
   std::optional<VertexId> choose_push(VertexId v, VertexId w, const std::array<VertexId, 3>& keep,
                                       ConeBase& base, bool leaves) const;
 
+  // --- star-shapification by shelling (the fallback) ------------------------------------------
+  // The fallback when bends and pushes fail (MapOptions::shelled says when it runs): v's base is
+  // pushed away until one fan of its witness w is left. A disc base is shelled onto star(w) one
+  // triangle at a time (topology/disc_shelling.hpp): each triangle leaves by a push of the vertex
+  // that leaves with it (an ear), or of the midpoint of its free edge (split first, a free split).
+  // Any other base (discs and edges joined at cut vertices) keeps w's largest fan and is pushed
+  // greedily, farthest from w first, splitting a free base edge when no vertex can go. Every push
+  // keeps Eq. (1) for v and leaves no dangling edge inside the fan. Such a cone always has
+  // interior: near p_c + t (w - p_c) for small t > 0 (each constraint is a base tet, positive at
+  // p_c, or a side tet whose sign there is that of the base tet through the same edge and w). The
+  // pushed vertices are then expanded last first, each now between v and the vertex it left with
+  // (the predecessor's contraction, Nigolian et al. 2023, Sec. 5.3). Everything is undone unless v
+  // expands; docs/algorithm/expansion.md says what is and is not proved.
+
+  // One edit of the shelling's pushes, kept so that a failure can undo them in reverse order: a
+  // push of spoke (v, vertex) at the new cluster vertex `added`, or a split of a base edge from
+  // `vertex` at `added`.
+  struct ShellingEdit {
+    bool split = false;
+    VertexId vertex{0}, added{0};
+  };
+  bool shelled_star_shapify(VertexId v, int k, int depth);
+  bool push_along_shelling(VertexId v, VertexId w, std::vector<ShellingEdit>& edits);
+  bool push_greedily_onto_star(VertexId v, VertexId w, std::vector<ShellingEdit>& edits);
+  bool try_push(VertexId v, VertexId x, const std::unordered_set<VertexId>& fan, std::vector<ShellingEdit>& edits);
+  void undo_shelling(VertexId v, std::vector<ShellingEdit>& edits);
+  VertexId split_base_edge(VertexId a, VertexId b);
+
   // --- inflation -----------------------------------------------------------------------------
   // A base edge (a, b) in no base triangle has cluster vertices u, u' on both sides in Lk(v): the
   // side planes through p_c, a, b face each other and flatten the kernel (paper Sec. 3.1, Fig. 4).
@@ -173,6 +202,7 @@ class ClusterExpander {
   // attempt whose expansions stop making the cluster smaller is stalled (stalled()).
   std::size_t least_cluster_ = SIZE_MAX, expanded_at_least_ = 0;
   bool aggressive_ = false;
+  bool shelling_round_ = false;  // the last round before stuck: the shelling star-shapification too
   std::vector<VertexId> recent_;  // expanded since the last smoothing
   std::size_t next_smooth_ = 0;
   const char* label_ = "";  // the kind of expansion under way, for the trace

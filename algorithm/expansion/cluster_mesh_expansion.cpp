@@ -19,8 +19,10 @@
 //     (relaxation)    re-centre the expanded base vertices       relax_base()
 //     line 9          inflation, when the base has dangling edges or cut vertices
 //                                                                inflate(), paper_inflate()
-//     line 10         star-shapification, when the cone has no kernel: bends, then pushes
-//                                                                bend_and_expand(), star_shapify()
+//     line 10         star-shapification, when the cone has no kernel: bends, then pushes; in a
+//                     last round before stuck, pushes along a shelling of the base (the fallback)
+//                                                                bend_and_expand(), star_shapify(),
+//                                                                shelled_star_shapify()
 //     line 11         then place as above                        try_simple(), expand_to()
 //     Sec. 4.2.2      collapse what the refinement added         collapse_added_since()
 //     Sec. 4.2.4      smooth the recently expanded vertices      smooth_recent()
@@ -52,7 +54,12 @@ ExpansionOutcome ClusterExpander::run() {
       if (failures_ == 0) return stuck();
       if (aggressive_) {
         if (auto doomed = nobuenoss_ahead(stuck())) return *doomed;
-        return stuck();
+        if (s_.shelled != ShelledMode::when_stuck || shelling_round_) return stuck();
+        shelling_round_ = true;  // the last round: the shelling star-shapification as well
+        for (VertexId v{0}; v < e_.num_vertices(); ++v)
+          if (e_.unexpanded[v]) queue_.mark(v);
+        classify_marked();
+        continue;
       }
       aggressive_ = true;
       for (VertexId v{0}; v < e_.num_vertices(); ++v)
@@ -70,7 +77,7 @@ ExpansionOutcome ClusterExpander::run() {
       }
       throw;
     }
-    if (cluster_ < before) aggressive_ = false;
+    if (cluster_ < before) aggressive_ = shelling_round_ = false;
     if (s_.smooth_every && expanded_ >= next_smooth_) {
       smooth_recent();
       next_smooth_ = expanded_ + s_.smooth_every;
@@ -149,12 +156,16 @@ bool ClusterExpander::refine_and_expand(VertexId v, int depth) {
     if (!inflate(v, depth) || !e_.unexpanded[v]) return !e_.unexpanded[v];
     if (try_simple(v, st.manifold_k)) return true;
   }
+  if (s_.shelled == ShelledMode::first && shelled_star_shapify(v, st.manifold_k, depth)) return true;
   if (bend_and_expand(v, st.manifold_k)) return true;  // line 10, then 11
   if (star_shapify(v, st.manifold_k, depth, false)) return true;
+  if (s_.shelled == ShelledMode::after_pushes && shelled_star_shapify(v, st.manifold_k, depth)) return true;
   if (!aggressive_ || depth > 0) return false;
   if (star_shapify(v, st.manifold_k, depth, true)) return true;
   // Line 9 as the paper does it (Sec. 4.2.1: split around the base's cut vertices).
-  return paper_inflate(v, depth) && (!e_.unexpanded[v] || try_simple(v, st.manifold_k));
+  if (paper_inflate(v, depth) && (!e_.unexpanded[v] || try_simple(v, st.manifold_k))) return true;
+  if (!e_.unexpanded[v]) return true;
+  return shelling_round_ && shelled_star_shapify(v, st.manifold_k, depth);  // the fallback
 }
 
 }  // namespace cmx::algorithm::detail

@@ -159,6 +159,8 @@ void add_counts(MapStatistics& into, const MapStatistics& s) {
                       {&into.subcluster_expansions, s.subcluster_expansions},
                       {&into.subcluster_candidates, s.subcluster_candidates}, {&into.pushes, s.pushes},
                       {&into.bends, s.bends}, {&into.relaxations, s.relaxations},
+                      {&into.shelled_star_shapifications, s.shelled_star_shapifications},
+                      {&into.base_edge_splits, s.base_edge_splits},
                       {&into.smoothing_moves, s.smoothing_moves}, {&into.inflation_splits, s.inflation_splits},
                       {&into.collapsed, s.collapsed}, {&into.merged, s.merged},
                       {&into.relocating_collapses, s.relocating_collapses}, {&into.flip_collapses, s.flip_collapses},

@@ -73,6 +73,11 @@ struct MapOptions {
   bool merge = true;            // ... also merging them into moving neighbours (cmx map --no-merge)
   bool flip_collapse = true;    // ... also after flips of their stars (cmx map --no-flip-collapse)
   bool collapse_refinement = true;  // collapse what each star-shapification added, at once
+  // When the expansion loop star-shapifies by shelling the cone base (cmx map --shelled):
+  // when-stuck (the fallback: once every candidate has failed everything else), after-pushes
+  // (wherever bends and pushes failed), first (before bends and pushes). The last two are for
+  // tests and comparisons: they change runs that the default leaves alone, not always for better.
+  std::string shelled = "when-stuck";
   bool check = false;           // assert every invariant after every step (slow; for debugging)
   std::string snap = "repair";  // doubles written: repair, chebyshev, nearest
   std::string order = "priority";    // expansion order: priority, index, random:SEED

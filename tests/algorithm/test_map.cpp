@@ -191,6 +191,30 @@ TEST_CASE("subclusters are expanded where no single vertex is simply expandable,
   }
 }
 
+TEST_CASE("star-shapification by shelling the cone base, tried first, keeps every invariant") {
+  // MapOptions::shelled first runs the fallback (refinement/shelled_star_shapify.cpp) wherever a
+  // cone is not star-shaped, so these runs use it on every kind of base the loop meets: discs
+  // (shelled triangle by triangle, free edges split) and pinched or edged bases (pushed greedily).
+  // Every invariant is checked after every step and each map is verified exactly.
+  MapOptions first;
+  first.shelled = ShelledMode::first;
+  std::size_t shelled = 0, splits = 0;
+  const MapProblem problems[] = {problem_from(thin_slab(9, 8, 3, 1), "tet"),
+                                 problem_from(thin_slab(10, 9, 1, 1), "star:3"),
+                                 problem_from(perturbed_grid(5, 4, 4, 3), "star:3"),
+                                 problem_from(perturbed_grid(5, 4, 4, 3), "stiff-tet")};
+  for (const MapProblem& p : problems) {
+    const MapResult r = map_checked(p, first);
+    CHECK(r.stats.shelled_star_shapifications <= r.stats.expansions_star_shapified);
+    shelled += r.stats.shelled_star_shapifications;
+    splits += r.stats.base_edge_splits;
+    // The default keeps it for a run that would otherwise end stuck; these runs do not.
+    CHECK(map_checked(p).stats.shelled_star_shapifications == 0);
+  }
+  CAPTURE(splits);
+  CHECK(shelled >= 10);
+}
+
 TEST_CASE("without the final collapses every added vertex is kept, and the map is still valid") {
   const MapProblem p = problem_from(thin_slab(4, 4, 1, 1), "tet");
   MapOptions o;

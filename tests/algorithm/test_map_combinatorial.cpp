@@ -125,3 +125,23 @@ TEST_CASE("Rudin's ball is realised on a sphere after a runaway restart") {
   check_realisation(p, r);
   CHECK(r.stats.expansion_restarts >= 1);
 }
+
+TEST_CASE("Rudin's ball: where bends and pushes fail, the shelling star-shapification expands the vertex") {
+  // With MapOptions::shelled after-pushes every candidate cone of these runs whose bends and
+  // pushes failed goes to the fallback (refinement/shelled_star_shapify.cpp); every invariant is
+  // checked after every step (its pushes included) and the realisation is verified exactly, its
+  // subdivision record included.
+  std::size_t shelled = 0;
+  for (auto shape : {cmx::generators::BoundaryShape::sphere, cmx::generators::BoundaryShape::star}) {
+    const alg::MapProblem p = combinatorial_problem(cmx::test::rudin_ball(), shape);
+    alg::MapOptions o;
+    o.combinatorial = true;
+    o.check = true;
+    o.shelled = alg::ShelledMode::after_pushes;
+    o.time_limit_seconds = 600;  // a bound for the test only
+    const alg::MapResult r = alg::map_to_domain(p, o);
+    check_realisation(p, r);
+    shelled += r.stats.shelled_star_shapifications;
+  }
+  CHECK(shelled > 0);
+}

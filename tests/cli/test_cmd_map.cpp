@@ -117,6 +117,27 @@ TEST_CASE("cmx map --subclusters: sizes 0 to 4 run and are reported, anything el
   }
 }
 
+TEST_CASE("cmx map --shelled: the three modes run, are reported with the fallback's counts, and a bad one exits 2") {
+  const Case c = make_case("ball:2", "star:4");
+  for (const char* mode : {"when-stuck", "after-pushes", "first"}) {
+    CAPTURE(mode);
+    const std::string out = c.dir + "/shelled_" + std::string(mode);
+    const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", out, "--shelled", mode, "--init", "shrink",
+                            "--report", out + ".json", "--quiet"});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string report = file_text(out + ".json");
+    CHECK(report.find(std::string("\"shelled\": \"") + mode + "\"") != std::string::npos);
+    CHECK(report.find("\"base_edge_splits\": ") != std::string::npos);
+  }
+  for (const char* bad : {"always", "", "First"}) {
+    CAPTURE(bad);
+    const auto r = run_cmx({"map", c.mesh, "--shape", "tet", "--shelled", bad});
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--shelled") != std::string::npos);
+  }
+}
+
 TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
   const Case c = make_case("grid:3,3,3", "stiff-tet");
   const std::string trace = c.dir + "/t.csv", svg = c.dir + "/t.svg";
