@@ -231,6 +231,7 @@ bool ClusterExpander::shelled_star_shapify(VertexId v, int k, int depth) {
   if (depth + 1 < max_depth)
     for (auto it = pushed.rbegin(); it != pushed.rend(); ++it)
       if (e_.unexpanded[*it]) refine_and_expand(*it, depth + 1);
+  for (VertexId c : pushed) stats_.shelled_pushes_left += e_.unexpanded[c] ? 1 : 0;
   return true;
 }
 

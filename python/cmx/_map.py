@@ -146,9 +146,10 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
     check (bool), snap ("repair", "chebyshev", "nearest"), order ("priority", "index",
     "random:SEED"), filter ("cascade", "interval", "exact", "mpfr:BITS"), lp ("certified", "exact"),
     norm ("l2-upper", "l1"), precision, arith ("rational", "double", "mpfr:BITS"), subclusters (int),
-    smooth (int), combinatorial (bool: V's values are ignored, T need only be oriented alike, the
-    result realises a subdivision of the complex and its source is the target; give boundary
-    positions). An unknown keyword raises TypeError.
+    smooth (int), shelled ("when-stuck", "after-pushes", "first": when the fallback star-shapifies
+    by shelling the cone base), combinatorial (bool: V's values are ignored, T need only be
+    oriented alike, the result realises a subdivision of the complex and its source is the target;
+    give boundary positions). An unknown keyword raises TypeError.
 
     Returns a cmx.Result. Raises cmx.InvalidInput (bad mesh, index, NaN, boundary, not a ball, not
     star-shaped, ...; .reason names the check) or cmx.InvalidOptions (a value that does not parse),

@@ -75,7 +75,7 @@ const Fields<bool> bool_fields = {
 const Fields<std::string> text_fields = {
     {"snap", &MapOptions::snap},  {"order", &MapOptions::order}, {"filter", &MapOptions::filter},
     {"lp", &MapOptions::lp},      {"norm", &MapOptions::norm},   {"precision", &MapOptions::precision},
-    {"arith", &MapOptions::arith}};
+    {"arith", &MapOptions::arith}, {"shelled", &MapOptions::shelled}};
 
 template <class T, class Parse>
 bool set_field(const Fields<T>& fields, MapOptions& o, const std::string& name, py::handle value,

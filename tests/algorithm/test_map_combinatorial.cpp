@@ -126,14 +126,19 @@ TEST_CASE("Rudin's ball is realised on a sphere after a runaway restart") {
   CHECK(r.stats.expansion_restarts >= 1);
 }
 
-TEST_CASE("Rudin's ball: where bends and pushes fail, the shelling star-shapification expands the vertex") {
+TEST_CASE("Rudin's and Ziegler's balls: where bends and pushes fail, the shelling star-shapification expands") {
   // With MapOptions::shelled after-pushes every candidate cone of these runs whose bends and
   // pushes failed goes to the fallback (refinement/shelled_star_shapify.cpp); every invariant is
   // checked after every step (its pushes included) and the realisation is verified exactly, its
-  // subdivision record included.
+  // subdivision record included. (On a sphere Rudin's ball takes 30 s that way and its doubles
+  // are not valid: the fallback is not a first resort, docs/algorithm/expansion.md.)
+  const std::pair<const std::vector<std::array<std::uint32_t, 4>>*, cmx::generators::BoundaryShape> cases[] = {
+      {&cmx::test::rudin_ball(), cmx::generators::BoundaryShape::star},
+      {&cmx::test::ziegler_ball(), cmx::generators::BoundaryShape::star},
+      {&cmx::test::ziegler_ball(), cmx::generators::BoundaryShape::tet}};
   std::size_t shelled = 0;
-  for (auto shape : {cmx::generators::BoundaryShape::sphere, cmx::generators::BoundaryShape::star}) {
-    const alg::MapProblem p = combinatorial_problem(cmx::test::rudin_ball(), shape);
+  for (const auto& [facets, shape] : cases) {
+    const alg::MapProblem p = combinatorial_problem(*facets, shape);
     alg::MapOptions o;
     o.combinatorial = true;
     o.check = true;
@@ -143,5 +148,5 @@ TEST_CASE("Rudin's ball: where bends and pushes fail, the shelling star-shapific
     check_realisation(p, r);
     shelled += r.stats.shelled_star_shapifications;
   }
-  CHECK(shelled > 0);
+  CHECK(shelled >= 3);
 }

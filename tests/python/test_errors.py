@@ -110,6 +110,8 @@ def test_bad_option_values(small):
         cmx.map(V, T, shape="sphere", threads=-1)
     with pytest.raises(cmx.InvalidOptions, match=r"option time_limit: -1"):
         cmx.map(V, T, shape="sphere", time_limit=-1)
+    with pytest.raises(cmx.InvalidOptions, match=r"option shelled: 'always'"):
+        cmx.map(V, T, shape="sphere", shelled="always")
     with pytest.raises(cmx.InvalidOptions, match=r"option subclusters"):
         cmx.map(V, T, shape="sphere", subclusters=9)
     with pytest.raises(cmx.InvalidOptions, match=r"option collapse: expected True or False"):

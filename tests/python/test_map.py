@@ -101,7 +101,8 @@ def test_options_reach_the_run(ball):
     V, T = ball
     seen = []
     r = cmx.map(V, T, shape="tet", init="shrink", snap="nearest", order="index", filter="exact",
-                subclusters=0, collapse=False, threads=1, time_limit=60, progress=seen.append)
+                subclusters=0, collapse=False, threads=1, time_limit=60, shelled="after-pushes",
+                progress=seen.append)
     check_map(r, V, T)
     assert seen and all(isinstance(p, cmx.Progress) for p in seen)
     assert {p.phase for p in seen} <= {"expansion", "collapse", "doubles", "verification", "shelling search"}
