@@ -163,7 +163,8 @@ struct MapStatistics {
   // The fallback star-shapification (refinement/shelled_star_shapify.cpp): expansions whose base
   // was shelled onto its witness, and the base edges it split at their midpoints on the way.
   std::size_t shelled_star_shapifications = 0, base_edge_splits = 0;
-  std::size_t shelled_pushes_left = 0;        // its pushed vertices not expanded right after v (queued)
+  std::size_t shelled_pushes = 0;             // the vertices it pushed (counted in pushes too)
+  std::size_t shelled_pushes_left = 0;        // of those, not expanded right after v (queued)
   std::size_t relaxations = 0;                // expanded vertices re-centred in their star's kernel
   std::size_t smoothing_moves = 0;            // Laplacian moves kept (paper Sec. 4.2.4)
   std::size_t inflation_splits = 0;

@@ -70,7 +70,7 @@ JsonObject expansion_json(const algorithm::MapStatistics& s) {
   ex.num("bends", n(s.bends)).num("relaxations", n(s.relaxations)).num("pushes", n(s.pushes));
   ex.num("inflation_splits", n(s.inflation_splits));
   ex.num("shelled", n(s.shelled_star_shapifications)).num("base_edge_splits", n(s.base_edge_splits));
-  ex.num("shelled_pushes_left", n(s.shelled_pushes_left));
+  ex.num("shelled_pushes", n(s.shelled_pushes)).num("shelled_pushes_left", n(s.shelled_pushes_left));
   add_collapse_counts(ex, s);
   ex.num("lps", n(s.lps))
       .num("lps_certified", n(s.lps_certified))

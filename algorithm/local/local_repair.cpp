@@ -161,6 +161,7 @@ void add_counts(MapStatistics& into, const MapStatistics& s) {
                       {&into.bends, s.bends}, {&into.relaxations, s.relaxations},
                       {&into.shelled_star_shapifications, s.shelled_star_shapifications},
                       {&into.base_edge_splits, s.base_edge_splits},
+                      {&into.shelled_pushes, s.shelled_pushes},
                       {&into.shelled_pushes_left, s.shelled_pushes_left},
                       {&into.smoothing_moves, s.smoothing_moves}, {&into.inflation_splits, s.inflation_splits},
                       {&into.collapsed, s.collapsed}, {&into.merged, s.merged},

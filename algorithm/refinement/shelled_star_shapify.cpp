@@ -224,6 +224,7 @@ bool ClusterExpander::shelled_star_shapify(VertexId v, int k, int depth) {
   }
   if (s_.check) check_all("after the shelling star-shapification's edits of vertex " + std::to_string(v));
   stats_.pushes += pushed.size();
+  stats_.shelled_pushes += pushed.size();
   const topology::ClusterVertexStatus now = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
   expand_to(v, p.position, now.manifold_k > 0 ? now.manifold_k : k, &p);
   ++stats_.expansions_star_shapified;
