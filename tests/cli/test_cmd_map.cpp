@@ -512,6 +512,25 @@ TEST_CASE("cmx map --combinatorial on Furch's knotted hole ends as a reported NO
   CHECK(json.find("\"combinatorial\": true") != std::string::npos);
 }
 
+TEST_CASE("cmx map --shelled after-pushes on Furch's knotted hole: the fallback expands where bends and pushes failed") {
+  // The knotted hole's bases where bends and pushes fail go to the shelling star-shapification;
+  // each of its edits and each expansion is checked exactly around the vertex it touched (an
+  // internal error, exit 10, otherwise). The cone always opened once one fan of the witness was
+  // left; what it cannot change is the topology: the run still ends on the NOBUENOSS ahead.
+  const std::string dir = fresh_directory();
+  const std::string mesh = dir + "/knotted.ovm", report = dir + "/r.json";
+  REQUIRE(run_cmx({"generate-mesh", "--shape", "knotted-hole", "-o", mesh, "-q"}).exit_code == 0);
+  const auto r = run_cmx({"map", mesh, "--shape", "stiff-tet", "--corners", "farthest", "--shelled", "after-pushes",
+                          "-o", dir + "/out", "--report", report, "--threads", "1"});
+  INFO(r.err);
+  CHECK(r.exit_code == 7);
+  CHECK(r.err.find("NOBUENOSS") != std::string::npos);
+  const std::string json = file_text(report);
+  CHECK(json.find("\"shelled\": \"after-pushes\"") != std::string::npos);
+  CHECK(json.find("\"shelled\": 0,") == std::string::npos);  // it ran at least once
+  CHECK(json.find("\"nobuenoss\": true") != std::string::npos);
+}
+
 TEST_CASE("cmx map on Furch's knotted hole stalls, finds a NOBUENOSS ahead and ends there (exit 7)") {
   // With its geometry and a stiff-tet boundary of farthest corners, greedy expansion stops making
   // the cluster smaller; the early check (after 64, 128, ... stalled expansions) expands the
