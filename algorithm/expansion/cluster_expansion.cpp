@@ -119,8 +119,9 @@ ExpansionOutcome ClusterExpander::nobuenoss_now() const {
 ExpansionOutcome ClusterExpander::stuck() const {
   if (failures_ == 0) return nobuenoss_now();
   return {MapOutcome::stuck, std::to_string(cluster_) +
-                                 " cluster vertices left; star-shapification or inflation "
-                                 "failed for every remaining candidate"};
+                                 " cluster vertices left; star-shapification (bends, pushes" +
+                                 (s_.shelled == ShelledMode::when_stuck ? ", and by shelling in a last round" : "") +
+                                 ") or inflation failed for every remaining candidate"};
 }
 
 void ClusterExpander::report_progress(bool final) {
