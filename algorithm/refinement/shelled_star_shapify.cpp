@@ -4,6 +4,7 @@
 // ("Star-shapification by shelling") has the argument and what it does not prove.
 #include <algorithm>
 #include <tuple>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -79,7 +80,8 @@ bool in_fan(const std::array<VertexId, 3>& t, VertexId w, const std::unordered_s
 // Only the kept fan is left: every base triangle is one of its triangles, and no base edge lies
 // outside the triangles.
 bool only_fan_left(const ConeBase& base, VertexId w, const std::unordered_set<VertexId>& fan) {
-  return std::all_of(base.triangles.begin(), base.triangles.end(), [&](const auto& t) { return in_fan(t, w, fan); }) &&
+  return std::all_of(base.triangles.begin(), base.triangles.end(),
+                     [&](const auto& t) { return in_fan(t, w, fan); }) &&
          dangling_count(base) == 0;
 }
 
@@ -209,7 +211,6 @@ bool ClusterExpander::shelled_star_shapify(VertexId v, int k, int depth) {
     return false;
   }
   const Placement p = place(gather_expansion_cone(e_, v), &w);
-
   if (!p.ok()) {
     undo_shelling(v, edits);
     return false;
