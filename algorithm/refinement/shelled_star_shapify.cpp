@@ -85,6 +85,19 @@ bool only_fan_left(const ConeBase& base, VertexId w, const std::unordered_set<Ve
          dangling_count(base) == 0;
 }
 
+// The witnesses a plan is tried with, best first: the base vertices in the most base triangles
+// (choose_witness's choice first). Another witness helps where the first one's fan has a
+// triangle beside it with a free edge on the mesh boundary, which no split may remove.
+std::vector<VertexId> witnesses(const ConeBase& base) {
+  std::vector<std::pair<int, VertexId>> order;
+  for (const auto& [x, triangles] : base.tets) order.emplace_back(-triangles, x);
+  std::sort(order.begin(), order.end());
+  std::vector<VertexId> out{choose_witness(base).vertex};
+  for (const auto& [negative_triangles, x] : order)
+    if (out.size() < 3 && x != out.front()) out.push_back(x);
+  return out;
+}
+
 }  // namespace
 
 // Splits base edge (a, b) at its target and source midpoints, as an expanded vertex. Every tet
@@ -200,21 +213,24 @@ bool ClusterExpander::push_greedily_onto_star(VertexId v, VertexId w, std::vecto
 }
 
 bool ClusterExpander::shelled_star_shapify(VertexId v, int k, int depth) {
+  // The refinement tried before (inflation above all) may have changed v's link since v was
+  // classified; every plan starts from a v that satisfies Eq. (1).
+  if (!topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_).expandable) return false;
   const ConeBase base = cone_base(e_, v);
   if (base.triangles.empty()) return false;
-  const VertexId w = choose_witness(base).vertex;
-  if (only_fan_left(base, w, kept_fan(base, w))) return false;  // nothing to push: the cone is what it is
   const Relabel relabel(label_, "shelled");
   std::vector<ShellingEdit> edits;
-  if (!push_along_shelling(v, w, edits) && !push_greedily_onto_star(v, w, edits)) {
+  Placement p;
+  VertexId w{0};
+  for (VertexId candidate : witnesses(base)) {
+    w = candidate;
+    if (only_fan_left(base, w, kept_fan(base, w))) return false;  // nothing to push: the cone is what it is
+    if ((push_along_shelling(v, w, edits) || push_greedily_onto_star(v, w, edits)) &&
+        (p = place(gather_expansion_cone(e_, v), &w)).ok())
+      break;
     undo_shelling(v, edits);
-    return false;
   }
-  const Placement p = place(gather_expansion_cone(e_, v), &w);
-  if (!p.ok()) {
-    undo_shelling(v, edits);
-    return false;
-  }
+  if (edits.empty()) return false;
   std::vector<VertexId> pushed;
   for (const ShellingEdit& edit : edits) {
     queue_.mark_star(edit.added);
