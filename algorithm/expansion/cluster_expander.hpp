@@ -155,8 +155,9 @@ class ClusterExpander {
   // interior: near p_c + t (w - p_c) for small t > 0 (each constraint is a base tet, positive at
   // p_c, or a side tet whose sign there is that of the base tet through the same edge and w). The
   // pushed vertices are then expanded last first, each now between v and the vertex it left with
-  // (the predecessor's contraction, Nigolian et al. 2023, Sec. 5.3). Everything is undone unless v
-  // expands; docs/algorithm/expansion.md says what is and is not proved.
+  // (the predecessor's contraction, Nigolian et al. 2023, Sec. 5.3). A plan that does not complete
+  // or place v is undone exactly and tried with the next of up to three witnesses;
+  // docs/algorithm/expansion.md says what is and is not proved.
 
   // One edit of the shelling's pushes, kept so that a failure can undo them in reverse order: a
   // push of spoke (v, vertex) at the new cluster vertex `added`, or a split of a base edge from
