@@ -45,6 +45,7 @@ struct MapProblem {
 // doubles are not a valid map (its result kept only if its doubles are valid).
 enum class InitialMapKind : std::uint8_t { shrink, tutte, given, automatic };
 std::optional<InitialMapKind> parse_initial_map_kind(std::string_view name);
+const char* to_string(InitialMapKind kind);
 
 // When the expansion loop star-shapifies by shelling the cone base
 // (refinement/shelled_star_shapify.cpp): when_stuck, the fallback, only in a last round once every
@@ -53,7 +54,6 @@ std::optional<InitialMapKind> parse_initial_map_kind(std::string_view name);
 enum class ShelledMode : std::uint8_t { when_stuck, after_pushes, first };
 std::optional<ShelledMode> parse_shelled_mode(std::string_view name);
 std::string_view to_string(ShelledMode m);
-const char* to_string(InitialMapKind kind);
 
 // What the progress callback gets. During the expansion: the cluster counts below. In later
 // phases ("collapse", "doubles", "verification"): done of total steps (total 0: unknown).

@@ -170,6 +170,7 @@ class ClusterExpander {
   bool push_along_shelling(VertexId v, VertexId w, std::vector<ShellingEdit>& edits);
   bool push_greedily_onto_star(VertexId v, VertexId w, std::vector<ShellingEdit>& edits);
   bool try_push(VertexId v, VertexId x, const std::unordered_set<VertexId>& fan, std::vector<ShellingEdit>& edits);
+  void undo_edit(VertexId v, const ShellingEdit& edit);
   void undo_shelling(VertexId v, std::vector<ShellingEdit>& edits);
   VertexId split_base_edge(VertexId a, VertexId b);
 

@@ -16,8 +16,8 @@
 namespace cmx::algorithm::detail {
 namespace {
 
-// Base edges in no base triangle, each counted once; with `within`, only those with both ends in it.
-int dangling_count(const ConeBase& base, const std::unordered_set<VertexId>* within = nullptr) {
+// Base edges in no base triangle with both ends in `within`, each counted once.
+int dangling_count(const ConeBase& base, const std::unordered_set<VertexId>& within) {
   std::unordered_set<std::uint64_t> in_triangle, dangling;
   auto key = [](VertexId a, VertexId b) {
     return (std::uint64_t{std::min(a, b)} << 32) | std::uint64_t{std::max(a, b)};
@@ -26,8 +26,7 @@ int dangling_count(const ConeBase& base, const std::unordered_set<VertexId>* wit
     for (int i = 0; i < 3; ++i) in_triangle.insert(key(t[i], t[(i + 1) % 3]));
   for (const auto& [a, nbrs] : base.adj)
     for (VertexId b : nbrs)
-      if (!in_triangle.count(key(a, b)) && (!within || (within->count(a) && within->count(b))))
-        dangling.insert(key(a, b));
+      if (!in_triangle.count(key(a, b)) && within.count(a) && within.count(b)) dangling.insert(key(a, b));
   return static_cast<int>(dangling.size());
 }
 
@@ -82,19 +81,19 @@ bool in_fan(const std::array<VertexId, 3>& t, VertexId w, const std::unordered_s
 bool only_fan_left(const ConeBase& base, VertexId w, const std::unordered_set<VertexId>& fan) {
   return std::all_of(base.triangles.begin(), base.triangles.end(),
                      [&](const auto& t) { return in_fan(t, w, fan); }) &&
-         dangling_count(base) == 0;
+         !has_dangling_edge(base);
 }
 
-// The witnesses a plan is tried with, best first: the base vertices in the most base triangles
-// (choose_witness's choice first). Another witness helps where the first one's fan has a
-// triangle beside it with a free edge on the mesh boundary, which no split may remove.
+// The witnesses a plan is tried with, best first: the three base vertices in the most base
+// triangles, smallest id among equals (the first is choose_witness's choice). Another witness
+// helps where the first one's fan has a triangle beside it with a free edge on the mesh boundary,
+// which no split may remove.
 std::vector<VertexId> witnesses(const ConeBase& base) {
   std::vector<std::pair<int, VertexId>> order;
   for (const auto& [x, triangles] : base.tets) order.emplace_back(-triangles, x);
   std::sort(order.begin(), order.end());
-  std::vector<VertexId> out{choose_witness(base).vertex};
-  for (const auto& [negative_triangles, x] : order)
-    if (out.size() < 3 && x != out.front()) out.push_back(x);
+  std::vector<VertexId> out;
+  for (std::size_t i = 0; i < order.size() && i < 3; ++i) out.push_back(order[i].second);
   return out;
 }
 
@@ -111,15 +110,18 @@ VertexId ClusterExpander::split_base_edge(VertexId a, VertexId b) {
   return s;
 }
 
-void ClusterExpander::undo_shelling(VertexId v, std::vector<ShellingEdit>& edits) {
-  for (auto it = edits.rbegin(); it != edits.rend(); ++it) {
-    const topology::CollapseResult r = e_.collapse_edge(it->split ? it->vertex : v, it->added);
-    if (!r.ok) throw MapError(MapErrorKind::internal, "could not undo a shelling edit: " + r.message);
-    if (!it->split) {
-      e_.unexpanded[it->added] = 0;
-      --cluster_;
-    }
+// Collapses the edit's new vertex back: the mesh is exactly as before the edit.
+void ClusterExpander::undo_edit(VertexId v, const ShellingEdit& edit) {
+  const topology::CollapseResult r = e_.collapse_edge(edit.split ? edit.vertex : v, edit.added);
+  if (!r.ok) throw MapError(MapErrorKind::internal, "could not undo a shelling edit: " + r.message);
+  if (!edit.split) {
+    e_.unexpanded[edit.added] = 0;
+    --cluster_;
   }
+}
+
+void ClusterExpander::undo_shelling(VertexId v, std::vector<ShellingEdit>& edits) {
+  for (auto it = edits.rbegin(); it != edits.rend(); ++it) undo_edit(v, *it);
   edits.clear();
 }
 
@@ -131,15 +133,13 @@ bool ClusterExpander::try_push(VertexId v, VertexId x, const std::unordered_set<
   if (!is_pushable(e_, v, x)) return false;
   const VertexId c = e_.split_edge(v, x, e_.center, true);
   ++cluster_;
-  if (dangling_count(cone_base(e_, v), &fan) > 0 ||
+  const ShellingEdit edit{false, x, c};
+  if (dangling_count(cone_base(e_, v), fan) > 0 ||
       !topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_).expandable) {
-    if (const topology::CollapseResult r = e_.collapse_edge(v, c); !r.ok)
-      throw MapError(MapErrorKind::internal, "could not undo a push: " + r.message);
-    e_.unexpanded[c] = 0;
-    --cluster_;
+    undo_edit(v, edit);
     return false;
   }
-  edits.push_back({false, x, c});
+  edits.push_back(edit);
   return true;
 }
 
@@ -172,7 +172,7 @@ bool ClusterExpander::push_along_shelling(VertexId v, VertexId w, std::vector<Sh
 bool ClusterExpander::push_greedily_onto_star(VertexId v, VertexId w, std::vector<ShellingEdit>& edits) {
   const ConeBase first = cone_base(e_, v);
   const std::unordered_set<VertexId> keep = kept_fan(first, w);
-  if (dangling_count(first, &keep) > 0) return false;  // a chord of the fan: no push removes it
+  if (dangling_count(first, keep) > 0) return false;  // a chord of the fan: no push removes it
   const std::size_t bound = 2 * (first.triangles.size() + first.verts.size()) + 16;
   for (std::size_t round = 0;; ++round) {
     const ConeBase base = cone_base(e_, v);
@@ -199,12 +199,10 @@ bool ClusterExpander::push_greedily_onto_star(VertexId v, VertexId w, std::vecto
           return std::find(u.begin(), u.end(), a) != u.end() && std::find(u.begin(), u.end(), b) != u.end();
         });
         if (shared != 1 || on_mesh_boundary(e_, a, b)) continue;
-        const VertexId s = split_base_edge(a, b);
-        edits.push_back({true, a, s});
-        if ((done = try_push(v, s, keep, edits))) break;
+        edits.push_back({true, a, split_base_edge(a, b)});
+        if ((done = try_push(v, edits.back().added, keep, edits))) break;
+        undo_edit(v, edits.back());
         edits.pop_back();
-        if (const topology::CollapseResult r = e_.collapse_edge(a, s); !r.ok)
-          throw MapError(MapErrorKind::internal, "could not undo a base edge split: " + r.message);
       }
       if (done) break;
     }
