@@ -71,6 +71,13 @@ void perturb(GeneratedDomain& d, std::uint64_t seed, double amplitude) {
   }
 }
 
+// A lattice complex at its integer points, jittered.
+GeneratedDomain perturbed(topology::GridComplex grid, std::uint64_t seed, double amplitude) {
+  GeneratedDomain d = from_grid(std::move(grid), 0);
+  perturb(d, seed, amplitude);
+  return d;
+}
+
 }  // namespace
 
 std::vector<std::array<double, 3>> GeneratedDomain::double_positions() const {
@@ -121,17 +128,20 @@ GeneratedDomain bings_house(std::uint32_t scale, std::uint64_t perturb_seed, dou
   if (scale < 4 || scale % 2 != 0 || scale > 64)
     throw std::invalid_argument("bings_house: the scale must be even, at least 4 and at most 64");
   check_amplitude(amplitude, "bings_house");
-  GeneratedDomain d = from_grid(topology::bings_house_nobuenoss(scale), 0);
-  perturb(d, perturb_seed, amplitude);
-  return d;
+  return perturbed(topology::bings_house_nobuenoss(scale), perturb_seed, amplitude);
+}
+
+GeneratedDomain bings_house_box(std::uint32_t scale, std::uint64_t perturb_seed, double amplitude) {
+  if (scale < 2 || scale % 2 != 0 || scale > 64)
+    throw std::invalid_argument("bings_house_box: the scale must be even, at least 2 and at most 64");
+  check_amplitude(amplitude, "bings_house_box");
+  return perturbed(topology::bings_house_in_box(scale), perturb_seed, amplitude);
 }
 
 GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude, std::uint32_t scale) {
   if (scale < 1 || scale > 5) throw std::invalid_argument("knotted_hole: the scale must be 1 to 5");
   check_amplitude(amplitude, "knotted_hole");
-  GeneratedDomain d = from_grid(topology::knotted_hole_ball(scale), 0);
-  perturb(d, perturb_seed, amplitude);
-  return d;
+  return perturbed(topology::knotted_hole_ball(scale), perturb_seed, amplitude);
 }
 
 namespace {

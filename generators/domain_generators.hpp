@@ -14,6 +14,7 @@
 //                   layer every vertex is a boundary vertex.
 //   bings_house     topology::bings_house_nobuenoss: a voxel ball whose interior vertices span
 //                   Bing's house, so the cluster mesh is a NOBUENOSS from the start.
+//   bings_house_box topology::bings_house_in_box: the same house in a full (shellable) box.
 //   knotted_hole    topology::knotted_hole_ball: Furch's knotted hole, whose cluster mesh erodes
 //                   to a NOBUENOSS under greedy expansion.
 //   thin_fingers    a hand: a palm of (2F+1)W x 4W x 4W cells with F fingers of W x W cells and
@@ -66,6 +67,10 @@ inline constexpr double default_perturb_amplitude = 0.25;
 // scale: even, >= 4 (std::invalid_argument otherwise).
 [[nodiscard]] GeneratedDomain bings_house(std::uint32_t scale, std::uint64_t perturb_seed,
                                           double amplitude = default_perturb_amplitude);
+// topology::bings_house_in_box: the house inside a full box, its vertices numbered last (greedy
+// `index` order meets it as a NOBUENOSS; the box is shellable). scale: even, 2 to 64.
+[[nodiscard]] GeneratedDomain bings_house_box(std::uint32_t scale, std::uint64_t perturb_seed,
+                                              double amplitude = default_perturb_amplitude);
 // scale: cells per lattice unit, 1 to 5 (std::invalid_argument otherwise): the same solid meshed
 // scale^3 times more finely.
 [[nodiscard]] GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude = default_perturb_amplitude,

@@ -109,14 +109,12 @@ bool on_sheet(const Sheet& s, const std::array<std::int64_t, 3>& p, std::int64_t
   return true;
 }
 
-}  // namespace
-
-GridComplex bings_house_nobuenoss(std::uint32_t scale) {
-  // Design units: box [0,10]x[0,4]x[0,8], floor z=4. Tube T1 (x in [2,4], y in [1,3]) leads
-  // from below through the lower room into the upper room; tube T2 (x in [6,8], y in [1,3])
-  // leads from above through the upper room into the lower room. Wall W1 (y=2, x in [0,2],
-  // z in [0,4]) ties T1 to the outer wall x=0; wall W2 (y=2, x in [8,10], z in [4,8]) ties T2 to
-  // the outer wall x=10.
+// The sheets of Bing's house with two rooms, in design units: box [0,10]x[0,4]x[0,8], floor z=4.
+// Tube T1 (x in [2,4], y in [1,3]) leads from below through the lower room into the upper room;
+// tube T2 (x in [6,8], y in [1,3]) leads from above through the upper room into the lower room.
+// Wall W1 (y=2, x in [0,2], z in [0,4]) ties T1 to the outer wall x=0; wall W2 (y=2, x in
+// [8,10], z in [4,8]) ties T2 to the outer wall x=10.
+std::vector<Sheet> bings_house_sheets() {
   std::vector<Sheet> sheets;
   sheets.push_back({2, 0, {0, 0}, {10, 4}, {{2, 1, 4, 3}}});           // bottom, hole under T1
   sheets.push_back({2, 8, {0, 0}, {10, 4}, {{6, 1, 8, 3}}});           // top, hole over T2
@@ -138,30 +136,75 @@ GridComplex bings_house_nobuenoss(std::uint32_t scale) {
   // Supporting walls.
   sheets.push_back({1, 2, {0, 0}, {2, 4}, {}});
   sheets.push_back({1, 2, {8, 4}, {10, 8}, {}});
+  return sheets;
+}
 
-  const std::int64_t u = std::max<std::uint32_t>(scale, 4) & ~1u;
-  // One cell of margin on each side; the offset is 2 so that design points stay at even grid
-  // coordinates (the reflected triangulation then puts a face diagonal through every crease).
-  const std::int64_t off = 2;
-  const std::uint32_t nx = static_cast<std::uint32_t>(10 * u + 2 * off), ny = static_cast<std::uint32_t>(4 * u + 2 * off),
-                      nz = static_cast<std::uint32_t>(8 * u + 2 * off);
-  auto on_house = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+// The house at `unit` grid cells per design unit, offset by `off` cells on each side.
+struct HouseGrid {
+  std::vector<Sheet> sheets = bings_house_sheets();
+  std::int64_t unit, off;
+  std::uint32_t nx, ny, nz;  // cells
+  HouseGrid(std::int64_t u, std::int64_t o)
+      : unit(u),
+        off(o),
+        nx(static_cast<std::uint32_t>(10 * u + 2 * o)),
+        ny(static_cast<std::uint32_t>(4 * u + 2 * o)),
+        nz(static_cast<std::uint32_t>(8 * u + 2 * o)) {}
+  bool on_house(std::int64_t i, std::int64_t j, std::int64_t k) const {
     const std::array<std::int64_t, 3> p{i - off, j - off, k - off};
     for (const Sheet& s : sheets)
-      if (on_sheet(s, p, u)) return true;
+      if (on_sheet(s, p, unit)) return true;
     return false;
-  };
+  }
+};
+
+}  // namespace
+
+GridComplex bings_house_nobuenoss(std::uint32_t scale) {
+  // One cell of margin on each side; the offset is 2 so that design points stay at even grid
+  // coordinates (the reflected triangulation then puts a face diagonal through every crease).
+  const HouseGrid h(std::max<std::uint32_t>(scale, 4) & ~1u, 2);
   // Keep exactly the cells with a corner on the house: the house points are then the interior
   // vertices (features are >= 4 cells apart, so no other point has all 8 cells kept).
-  std::vector<char> keep(std::size_t{nx} * ny * nz, 0);
-  for (std::uint32_t k = 0; k < nz; ++k)
-    for (std::uint32_t j = 0; j < ny; ++j)
-      for (std::uint32_t i = 0; i < nx; ++i) {
+  std::vector<char> keep(std::size_t{h.nx} * h.ny * h.nz, 0);
+  for (std::uint32_t k = 0; k < h.nz; ++k)
+    for (std::uint32_t j = 0; j < h.ny; ++j)
+      for (std::uint32_t i = 0; i < h.nx; ++i) {
         bool touch = false;
-        for (int c = 0; c < 8 && !touch; ++c) touch = on_house(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
-        if (touch) keep[i + std::size_t{nx} * (j + std::size_t{ny} * k)] = 1;
+        for (int c = 0; c < 8 && !touch; ++c) touch = h.on_house(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1));
+        if (touch) keep[i + std::size_t{h.nx} * (j + std::size_t{h.ny} * k)] = 1;
       }
-  return voxel_complex(nx, ny, nz, keep, GridTriangulation::reflected);
+  return voxel_complex(h.nx, h.ny, h.nz, keep, GridTriangulation::reflected);
+}
+
+GridComplex bings_house_in_box(std::uint32_t scale, std::size_t* house_vertices) {
+  const HouseGrid h(std::max<std::uint32_t>(scale, 2) & ~1u, 2);
+  GridComplex box = voxel_complex(h.nx, h.ny, h.nz, {}, GridTriangulation::reflected);
+  // Renumber: the vertices off the house first, the house's last, each in grid order.
+  const std::size_t n = box.coords.size();
+  std::vector<char> house(n, 0);
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto& c = box.coords[v];
+    house[v] = h.on_house(c[0], c[1], c[2]) ? 1 : 0;
+    count += static_cast<std::size_t>(house[v]);
+  }
+  std::vector<VertexId> to(n);
+  std::uint32_t off_house = 0, on_house = static_cast<std::uint32_t>(n - count);
+  for (std::size_t v = 0; v < n; ++v) to[v] = VertexId{house[v] ? on_house++ : off_house++};
+  GridComplex out;
+  out.coords.resize(n);
+  for (std::size_t v = 0; v < n; ++v) out.coords[to[v]] = box.coords[v];
+  std::vector<Tet> tets;
+  tets.reserve(box.mesh.num_tets());
+  for (TetId t{0}; t < box.mesh.tet_capacity(); ++t) {
+    if (!box.mesh.is_alive(t)) continue;
+    const Tet x = box.mesh.tet(t);
+    tets.push_back({to[x[0]], to[x[1]], to[x[2]], to[x[3]]});
+  }
+  out.mesh = TetMesh(n, tets);
+  if (house_vertices) *house_vertices = count;
+  return out;
 }
 
 }  // namespace cmx::topology

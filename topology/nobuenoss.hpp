@@ -35,5 +35,12 @@ namespace cmx::topology {
 // vertex satisfies Eq. (1) from the start: a NOBUENOSS in the sense of Fig. 8, a disc glued
 // along its boundary to itself). `scale` (>= 4, even) is the number of cells per design unit.
 [[nodiscard]] GridComplex bings_house_nobuenoss(std::uint32_t scale = 4);
+// The same house (`scale` >= 2, even, cells per design unit) inside a full box of cells: a
+// shellable ball (greedy shelling finds one at once) whose vertices on the house are numbered
+// last. Greedy expansion in `index` order expands every other interior vertex first and then
+// meets the house, a NOBUENOSS; other orders need not. `house_vertices` (when given) receives
+// how many vertices lie on the house (the last ids). The paper's shelling fallback (Sec. 4.3)
+// applies to it; docs/algorithm/expansion.md says what replaying a shelling does here.
+[[nodiscard]] GridComplex bings_house_in_box(std::uint32_t scale = 2, std::size_t* house_vertices = nullptr);
 
 }  // namespace cmx::topology

@@ -6,6 +6,7 @@
 #include "topology/ball_check.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/fixed_boundary_replay.hpp"
 #include "topology/generators.hpp"
 #include "topology/mesh_edits.hpp"
 #include "topology/nobuenoss.hpp"
@@ -14,6 +15,37 @@
 
 using namespace cmx::topology;
 using cmx::topology::test::flagged_submesh;
+
+namespace {
+
+// Replays Alg. 2's steps in the paper's setting (every vertex unexpanded at first, boundary
+// included): the number of expanded vertices not satisfying Eq. (1) at their turn. Every
+// `ball_every` steps (0: never) the cluster mesh is checked to be a ball.
+std::size_t replay_in_paper_setting(const TetMesh& input, const ShellingExpansion& e, std::size_t ball_every) {
+  TetMesh m = input;
+  std::vector<char> U(m.num_vertices(), 1);
+  ClusterLinkWorkspace ws;
+  std::size_t failures = 0;
+  for (std::size_t i = 0; i < e.steps.size(); ++i) {
+    const ExpansionStep& st = e.steps[i];
+    if (st.kind != ExpansionStepKind::plain_vertex) {
+      const SplitResult r = st.kind == ExpansionStepKind::edge_split
+                                ? split_edge(m, st.split[0], st.split[1])
+                                : split_face(m, st.split[0], st.split[1], st.split[2]);
+      REQUIRE(r.new_vertex == st.vertex);
+      U.push_back(1);
+    }
+    if (!st.automatic && !is_topologically_expandable(m, st.vertex, U, ws)) ++failures;
+    U[st.vertex] = 0;
+    if (ball_every > 0 && i % ball_every == ball_every - 1) {
+      const BallVerdict b = check_ball(flagged_submesh(m, U));
+      CHECK_MESSAGE(b.ok, "step " << i << ": " << b.message);
+    }
+  }
+  return failures;
+}
+
+}  // namespace
 
 TEST_CASE("shelling of grids: every removal leaves a ball") {
   for (const GridTriangulation tri : {GridTriangulation::freudenthal, GridTriangulation::reflected}) {
@@ -153,26 +185,7 @@ TEST_CASE("Furch: greedy shelling peels the unknotted-hole ball but not the knot
   // the cluster mesh stays a ball (checked every 2000 steps).
   const ShellingExpansion e = shelling_to_expansion_sequence(control.mesh, ok.order);
   REQUIRE(e.ok);
-  TetMesh m = control.mesh;
-  std::vector<char> U(m.num_vertices(), 1);
-  ClusterLinkWorkspace ws;
-  std::size_t failures = 0;
-  for (std::size_t i = 0; i < e.steps.size(); ++i) {
-    const ExpansionStep& st = e.steps[i];
-    if (st.kind != ExpansionStepKind::plain_vertex) {
-      const SplitResult r = st.kind == ExpansionStepKind::edge_split
-                                ? split_edge(m, st.split[0], st.split[1])
-                                : split_face(m, st.split[0], st.split[1], st.split[2]);
-      REQUIRE(r.new_vertex == st.vertex);
-      U.push_back(1);
-    }
-    if (!st.automatic && !is_topologically_expandable(m, st.vertex, U, ws)) ++failures;
-    U[st.vertex] = 0;
-    if (i % 2000 == 1999) {
-      const BallVerdict b = check_ball(flagged_submesh(m, U));
-      CHECK_MESSAGE(b.ok, "step " << i << ": " << b.message);
-    }
-  }
+  const std::size_t failures = replay_in_paper_setting(control.mesh, e, 2000);
   CHECK(failures == 0);
 }
 
@@ -188,4 +201,53 @@ TEST_CASE("find_shelling starts no attempt once told to stop, but always makes t
   CHECK(free.attempts == 2);
   CHECK(!free.stopped_at_deadline);
   CHECK(free.message.find("deadline") == std::string::npos);
+}
+
+TEST_CASE("Bing's house in a box: shellable, yet greedy index-order expansion meets the house") {
+  std::size_t house = 0;
+  const GridComplex g = bings_house_in_box(2, &house);
+  const BallVerdict ball = check_ball(g.mesh);
+  REQUIRE_MESSAGE(ball.ok, ball.message);
+  const std::size_t n = g.mesh.num_vertices();
+  REQUIRE(house > 0);
+  // The house's vertices are the last ids and all interior.
+  const std::vector<char> interior = interior_vertex_flags(g.mesh);
+  for (std::size_t v = n - house; v < n; ++v) CHECK(interior[v]);
+  // Index order expands every other interior vertex and is left with exactly the house: a
+  // NOBUENOSS (Euler characteristic 1, connected, 2-dimensional, no vertex satisfying Eq. (1)).
+  const TopologicalExpansionResult stuck = topological_expansion(g.mesh, *parse_expansion_order("index"));
+  CHECK(stuck.stuck);
+  REQUIRE(stuck.remaining.size() == house);
+  CHECK(stuck.remaining.front() == VertexId(n - house));
+  CHECK(stuck.remaining_euler == 1);
+  CHECK(stuck.remaining_components == 1);
+  std::vector<char> left(n, 0);
+  for (VertexId v : stuck.remaining) left[v] = 1;
+  const SubcomplexCounts c = subcomplex_counts(g.mesh, VertexSubset(left));
+  CHECK(c.tets == 0);
+  CHECK(c.triangles > 0);
+  // The default order does not meet it.
+  CHECK(!topological_expansion(g.mesh, {}).stuck);
+  // The ball is shellable, and Alg. 2 replays the shelling topologically: in the paper's setting
+  // (every vertex unexpanded at first) ...
+  const ShellingResult s = find_shelling(g.mesh, {2, 1, {}});
+  REQUIRE(s.found);
+  const ShellingExpansion e = shelling_to_expansion_sequence(g.mesh, s.order);
+  REQUIRE_MESSAGE(e.ok, e.message);
+  CHECK(replay_in_paper_setting(g.mesh, e, 0) == 0);
+  // ... and in cmx's, with the boundary expanded from the start.
+  const FixedBoundaryReplay f = replay_with_fixed_boundary(g.mesh, e);
+  CHECK_MESSAGE(f.ok, f.first_failure);
+  CHECK(f.eq1_failures == 0);
+  CHECK(f.left == 0);
+  CHECK(f.expansions >= n - ball.boundary_vertices);
+  CHECK(f.boundary_splits > 0);
+  CHECK(f.free_splits > 0);
+  CHECK(f.cluster_splits > 0);
+  // The steps whose cone is empty while the split edge's ends sit at the shrink point.
+  CHECK(f.empty_cone_edge_splits > 0);
+  CHECK(f.empty_cone_edge_splits <= f.cluster_splits);
+  MESSAGE("fixed-boundary replay: " << f.expansions << " expansions, splits " << f.boundary_splits << " boundary, "
+                                    << f.free_splits << " free, " << f.cluster_splits << " of cluster simplices ("
+                                    << f.empty_cone_edge_splits << " cluster-edge splits with an empty cone)");
 }

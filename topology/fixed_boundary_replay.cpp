@@ -1,0 +1,93 @@
+#include "topology/fixed_boundary_replay.hpp"
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "topology/cluster_links.hpp"
+#include "topology/complex_queries.hpp"
+#include "topology/mesh_edits.hpp"
+
+namespace cmx::topology {
+namespace {
+
+std::size_t tets_with_face(const TetMesh& m, VertexId a, VertexId b, VertexId c) {
+  std::size_t n = 0;
+  for (TetId t : m.tets_of(a))
+    if (const Tet x = m.tet(t); contains(x, b) && contains(x, c)) ++n;
+  return n;
+}
+
+// A face is on the boundary when one tet has it; an edge when one of its faces is.
+bool on_mesh_boundary(const TetMesh& m, const std::array<VertexId, 3>& s, int n) {
+  if (n == 3) return tets_with_face(m, s[0], s[1], s[2]) == 1;
+  for (TetId t : m.tets_of(s[0])) {
+    const Tet x = m.tet(t);
+    if (!contains(x, s[1])) continue;
+    for (VertexId c : x)
+      if (c != s[0] && c != s[1] && tets_with_face(m, s[0], s[1], c) == 1) return true;
+  }
+  return false;
+}
+
+// Split vertex m of cluster edge (x, y): does a tet (m, ., s, t) with s, t expanded exist?
+bool faces_mirrored_pair(const TetMesh& m, VertexId mid, const std::vector<char>& unexpanded) {
+  for (TetId t : m.tets_of(mid)) {
+    std::size_t expanded = 0;
+    for (VertexId w : m.tet(t))
+      if (!unexpanded[w]) ++expanded;
+    if (expanded == 2) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const ShellingExpansion& sequence) {
+  FixedBoundaryReplay r;
+  TetMesh m = input;
+  const std::vector<char> boundary = boundary_vertex_flags(m);
+  std::vector<char> unexpanded(m.num_vertices());
+  for (std::size_t v = 0; v < unexpanded.size(); ++v) unexpanded[v] = boundary[v] ? 0 : 1;
+  ClusterLinkWorkspace ws;
+  for (std::size_t i = 0; i < sequence.steps.size(); ++i) {
+    const ExpansionStep& st = sequence.steps[i];
+    bool edge_of_cluster = false;
+    if (st.kind != ExpansionStepKind::plain_vertex) {
+      const int n = st.kind == ExpansionStepKind::edge_split ? 2 : 3;
+      bool all_cluster = true;
+      for (int a = 0; a < n; ++a) all_cluster = all_cluster && unexpanded[st.split[a]];
+      const bool on_boundary = on_mesh_boundary(m, st.split, n);
+      const SplitResult s = n == 2 ? split_edge(m, st.split[0], st.split[1])
+                                   : split_face(m, st.split[0], st.split[1], st.split[2]);
+      if (!s.ok || s.new_vertex != st.vertex) {
+        r.first_failure = "step " + std::to_string(i) + ": the split does not match the sequence";
+        return r;
+      }
+      unexpanded.resize(m.num_vertices(), 0);
+      if (on_boundary)
+        ++r.boundary_splits;
+      else if (!all_cluster)
+        ++r.free_splits;
+      else {
+        ++r.cluster_splits;
+        unexpanded[st.vertex] = 1;
+        edge_of_cluster = n == 2;
+      }
+    }
+    if (!unexpanded[st.vertex]) continue;
+    ++r.expansions;
+    if (edge_of_cluster && faces_mirrored_pair(m, st.vertex, unexpanded)) ++r.empty_cone_edge_splits;
+    if (!st.automatic && !is_topologically_expandable(m, st.vertex, unexpanded, ws)) {
+      if (r.eq1_failures++ == 0)
+        r.first_failure =
+            "step " + std::to_string(i) + ": vertex " + std::to_string(st.vertex) + " fails Eq. (1)";
+    }
+    unexpanded[st.vertex] = 0;
+  }
+  r.left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
+  r.ok = r.eq1_failures == 0 && r.left == 0;
+  return r;
+}
+
+}  // namespace cmx::topology

@@ -1,0 +1,49 @@
+#pragma once
+// Alg. 2 (paper Sec. 4.3) in cmx's setting: the boundary stays at its prescribed positions from
+// the start, so only interior vertices are ever in the cluster mesh.
+//
+// The paper replays a shelling with every vertex unexpanded at first, boundary included, and
+// "expands" a boundary vertex by giving it its prescribed position. cmx never moves a boundary
+// vertex, so this replays the same steps with the boundary expanded from the start:
+//   - a split of a simplex on the mesh boundary makes a boundary vertex (placed, geometrically,
+//     at the matching point of the target surface, as the paper does);
+//   - a split of an interior simplex with an expanded vertex makes an expanded vertex at once
+//     (placed at the centroid of the current positions, which leaves every tet's orientation a
+//     positive multiple of its parent's: a free split);
+//   - a split of an interior simplex of cluster vertices makes a cluster vertex, expanded when
+//     its step comes;
+//   - a step whose vertex is already expanded (a boundary vertex, a free split) is skipped.
+// What it checks is the topological half of the fallback: that every vertex the replay expands
+// satisfies Eq. (1) when its turn comes, and that the cluster mesh ends empty. It also counts the
+// steps whose geometric half is known to be hard: an edge-split vertex of a cluster edge (x, y)
+// whose star holds a tet (x, y, s, t) with s and t expanded, split into (m, y, s, t) and
+// (x, m, s, t): while x and y sit at the shrink point these two ask m for opposite signs, so its
+// cone is empty (docs/algorithm/expansion.md, "Replaying Alg. 2 with the boundary in place").
+
+#include <cstddef>
+#include <string>
+
+#include "topology/shelling.hpp"
+#include "topology/tet_mesh.hpp"
+
+namespace cmx::topology {
+
+struct FixedBoundaryReplay {
+  bool ok = false;                         // every expansion satisfied Eq. (1) and the cluster ended empty
+  std::size_t expansions = 0;              // interior vertices the replay expanded (original or split)
+  std::size_t eq1_failures = 0;            // of those, not satisfying Eq. (1) at their turn
+  std::size_t boundary_splits = 0;         // splits of simplices on the mesh boundary
+  std::size_t free_splits = 0;             // splits of interior simplices with an expanded vertex
+  std::size_t cluster_splits = 0;          // splits of interior simplices of cluster vertices
+  std::size_t empty_cone_edge_splits = 0;  // cluster-edge splits facing the mirrored pair above
+  std::size_t left = 0;                    // cluster vertices left at the end
+  std::string first_failure;               // the first step that failed Eq. (1), when one did
+};
+
+// Preconditions: `input` is the mesh `sequence` was computed from
+// (shelling_to_expansion_sequence), `sequence.ok`, and check_ball(input).ok. O(T) plus the
+// Eq. (1) tests, one per expansion.
+[[nodiscard]] FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input,
+                                                             const ShellingExpansion& sequence);
+
+}  // namespace cmx::topology
