@@ -1,4 +1,4 @@
-// cmx topo-expand (MESH | --builtin NAME) [--order priority|index|random:SEED] [--json]:
+// cmx topo-expand (MESH | --builtin NAME) [--order priority|index|strict-index|random:SEED] [--json]:
 // topological expansion (paper Sec. 5.1) of a mesh's interior vertices, by Eq. (1) alone.
 //
 // The mesh is read with its file's vertex order kept (no geometric orientation check: this is a
@@ -10,7 +10,8 @@
 // the output, not an error); 2 bad command line; 3 unreadable or malformed file ("file:line:
 // message"); 4 read, but not a ball (the reason on stderr). Nothing is printed on stdout unless
 // the exit code is 0. `--builtin` builds a complex in memory (no data file needed): the
-// knotted-hole ball and its unknotted control, Bing's house, a Freudenthal grid.
+// knotted-hole ball and its unknotted control, Bing's house (alone, and in a box), a Freudenthal
+// grid.
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -87,6 +88,7 @@ TetMesh builtin_mesh(const std::string& name) {
   if (name == "knotted-hole") return topology::knotted_hole_ball().mesh;
   if (name == "unknotted-hole") return topology::unknotted_hole_ball().mesh;
   if (name == "bings-house") return topology::bings_house_nobuenoss().mesh;
+  if (name == "bings-house-box") return topology::bings_house_in_box().mesh;
   if (name.rfind("grid:", 0) == 0) {
     if (const auto n = parse_grid_size(name.substr(5)))
       return topology::grid_complex((*n)[0], (*n)[1], (*n)[2]).mesh;
@@ -94,7 +96,7 @@ TetMesh builtin_mesh(const std::string& name) {
                 std::to_string(max_builtin_tets) + " tets)");
   }
   usage_error("--builtin: unknown builtin '" + name +
-              "' (knotted-hole, unknotted-hole, bings-house, grid:NX,NY,NZ)");
+              "' (knotted-hole, unknotted-hole, bings-house, bings-house-box, grid:NX,NY,NZ)");
 }
 
 void print_report(const Input& in, const topology::ExpansionOrder& order,
@@ -165,12 +167,14 @@ int run(const std::vector<std::string>& args) {
   app.add_option("--builtin", builtin,
                  "a complex built in memory instead of MESH: knotted-hole (Furch's ball\n"
                  "with a knotted hole: gets stuck), unknotted-hole (its control),\n"
-                 "bings-house, grid:NX,NY,NZ (Freudenthal grid of NX*NY*NZ cells, 6 tets\n"
-                 "each)")
+                 "bings-house, bings-house-box (the house in a shellable box, stuck on\n"
+                 "the house in index order only), grid:NX,NY,NZ (Freudenthal grid of\n"
+                 "NX*NY*NZ cells, 6 tets each)")
       ->type_name("NAME");
   add_order_option(app, order,
                    "priority (default: k = 1, 2, 3, other; then more expanded neighbours;\n"
-                   "then lower id), index (lowest id), random:SEED (seeded permutation)");
+                   "then lower id), index (lowest id; strict-index is the same here),\n"
+                   "random:SEED (seeded permutation)");
   app.add_flag("--raw", raw,
                "skip the chord splits that first make the interior mesh simply\n"
                "connected (by default chords are split as cmx map does: only those\n"

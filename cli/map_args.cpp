@@ -14,7 +14,7 @@ const HelpText help = {
     "usage: cmx map DOMAIN (--boundary B.txt | --codomain MESH | --shape SHAPE) [-o OUT]\n"
     "               [--format tmap,vtu,ovm,vtk,mesh,msh] [--report R.json] [--report-on-failure]\n"
     "               [--time-limit S] [--check] [--no-collapse] [--no-merge] [--no-flip-collapse]\n"
-    "               [--order priority|index|random:SEED] [--seed N] [--corners random|farthest]\n"
+    "               [--order priority|index|strict-index|random:SEED] [--seed N] [--corners random|farthest]\n"
     "               [--precision dyadic|shift|segment|none]\n"
     "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
     "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
@@ -185,7 +185,11 @@ void add_expansion_options(CLI::App& app, MapArgs& a) {
              "last expansions toward their neighbours' centroid where every tet\n"
              "keeps its state (paper Sec. 4.2.4; default 0: off; at most 1000000)")
       ->type_name("N");
-  add_order_option(app, a.options.order, "expansion order: priority (default: paper Sec. 4.1.2), index,\nrandom:SEED");
+  add_order_option(app, a.options.order, "expansion order: priority (default: paper Sec. 4.1.2), index (the\n"
+                   "class first, then the lowest id), random:SEED, strict-index (the\n"
+                   "lowest id first, refined if need be: the order of cmx topo-expand\n"
+                   "--order index, for experiments; it forces refinement where the\n"
+                   "others would expand simply and is much slower)");
   const auto precision =
       one_of_table("precision policy", algorithm::parse_precision_policy, "dyadic, shift, segment, none");
   add_parsed(app, "--precision", a.options.placement.precision, precision,

@@ -14,6 +14,7 @@ namespace cmx::topology {
 std::optional<ExpansionOrder> parse_expansion_order(std::string_view text) {
   if (text == "priority") return ExpansionOrder{ExpansionOrderKind::priority, 0};
   if (text == "index") return ExpansionOrder{ExpansionOrderKind::index, 0};
+  if (text == "strict-index") return ExpansionOrder{ExpansionOrderKind::strict_index, 0};
   constexpr std::string_view prefix = "random:";
   if (text.substr(0, prefix.size()) == prefix) {
     const std::string_view digits = text.substr(prefix.size());
@@ -29,6 +30,7 @@ std::string to_string(const ExpansionOrder& order) {
   switch (order.kind) {
     case ExpansionOrderKind::priority: return "priority";
     case ExpansionOrderKind::index: return "index";
+    case ExpansionOrderKind::strict_index: return "strict-index";
     case ExpansionOrderKind::random: return "random:" + std::to_string(order.seed);
   }
   return "?";
@@ -106,7 +108,8 @@ class GreedyExpansion {
  private:
   std::uint64_t key_of(VertexId v, const ClusterVertexStatus& st) const {
     switch (order_.kind) {
-      case ExpansionOrderKind::index: return v;
+      case ExpansionOrderKind::index:
+      case ExpansionOrderKind::strict_index: return v;
       case ExpansionOrderKind::random: return rank_[v];
       case ExpansionOrderKind::priority: break;
     }

@@ -7,6 +7,8 @@
 //              with lower k first (1, 2, 3, then Eq.(1)-expandable but not k-manifold), then more
 //              expanded neighbours first (larger expansion cone), then lower vertex id.
 //   index    : the expandable vertex with the lowest id.
+//   strict-index : the same here (topological expansion has no classes); cmx map puts the id
+//              before the class (algorithm/expansion/candidate_queue.hpp).
 //   random:S : the expandable vertex first in a random permutation of the vertices drawn from
 //              std::mt19937_64(S) (Fisher-Yates with our own bounded draw: platform-independent).
 // After each expansion only the unexpanded neighbours of the expanded vertex are re-evaluated
@@ -26,7 +28,7 @@
 
 namespace cmx::topology {
 
-enum class ExpansionOrderKind : std::uint8_t { priority, index, random };
+enum class ExpansionOrderKind : std::uint8_t { priority, index, random, strict_index };
 
 struct ExpansionOrder {
   ExpansionOrderKind kind = ExpansionOrderKind::priority;

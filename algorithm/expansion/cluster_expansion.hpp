@@ -28,6 +28,7 @@
 // refinement budget or the time limit.
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,9 @@ namespace cmx::algorithm {
 struct ExpansionSettings {
   PlacementOptions placement;
   topology::ExpansionOrder order;
+  // A planned order (CandidateQueue): rank per vertex, lower first, before the class. Set by the
+  // shelling replay (refinement/shelling_replay.hpp); `strict-index` makes it the vertex id.
+  std::shared_ptr<const std::vector<std::uint32_t>> rank;
   bool check = false;
   RunControl* control = nullptr;  // polled before every step: the time limit and the stop hook
   std::chrono::steady_clock::time_point start;

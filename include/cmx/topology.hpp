@@ -71,7 +71,8 @@ struct TopologicalExpansion {
 // Topological expansion (paper Sec. 5.1): expands the cluster mesh on `cluster_vertices` (empty:
 // the interior vertices, the paper's setting) greedily by Eq. (1) alone, without geometry, in
 // the given order: "priority" (k-manifold-expandable vertices with lower k first, then larger
-// expansion cones, then lower index), "index" (lowest index first) or "random:SEED". Unlike
+// expansion cones, then lower index), "index" (lowest index first; "strict-index" is the same
+// here, there being no classes) or "random:SEED". Unlike
 // `cmx topo-expand` (without --raw) the mesh is taken as given: no chords are split first, so an
 // interior that is not simply connected makes the expansion stuck, with
 // initially_simply_connected false. The mesh is not modified; indices are the input's.

@@ -6,6 +6,7 @@
 #include "algorithm/verify/verify_map.hpp"
 #include "map_test_util.hpp"
 #include "topology/generators.hpp"
+#include "topology/topological_expansion.hpp"
 
 #ifdef CMX_HAVE_TETGEN_BALL
 #include "support/tetgen_ball.hpp"
@@ -188,6 +189,33 @@ TEST_CASE("subclusters are expanded where no single vertex is simply expandable,
     const MapResult without = map_checked(p, off);
     CHECK(without.stats.subcluster_expansions == 0);
     CHECK(without.stats.subcluster_candidates == 0);
+  }
+}
+
+TEST_CASE("strict-index expands the lowest-numbered candidate first, refined if need be") {
+  // Where nothing needs refinement the sequence is exactly that of topological expansion in
+  // index order (the order cmx topo-expand --order index reports), a different one from the
+  // default's.
+  const GeneratedDomain d = perturbed_grid(4, 4, 3, 2);
+  const MapProblem p = cmx::test::identity_problem(d);
+  MapOptions strict;
+  strict.order = *topology::parse_expansion_order("strict-index");
+  std::vector<std::uint32_t> sequence;
+  strict.trace = [&sequence](const TraceRow& row) { sequence.push_back(row.vertex); };
+  const MapResult r = map_checked(p, strict);
+  REQUIRE(r.stats.expansions_star_shapified + r.stats.expansions_inflated + r.stats.expansions_subcluster == 0);
+  const topology::TetMesh input(p.source.size(), p.tets);
+  const topology::TopologicalExpansionResult t =
+      topology::topological_expansion(input, *topology::parse_expansion_order("index"));
+  REQUIRE(!t.stuck);
+  REQUIRE(sequence.size() == t.sequence.size());
+  for (std::size_t i = 0; i < sequence.size(); ++i) CHECK(sequence[i] == std::uint32_t(t.sequence[i]));
+  const topology::TopologicalExpansionResult by_priority = topology::topological_expansion(input, {});
+  CHECK(by_priority.sequence != t.sequence);
+  // Where refinement is needed it still keeps every invariant and maps.
+  for (const char* shape : {"star:3", "stiff-tet"}) {
+    CAPTURE(shape);
+    map_checked(problem_from(perturbed_grid(4, 3, 3, 11), shape), strict);
   }
 }
 

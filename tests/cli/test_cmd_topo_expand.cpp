@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -154,6 +155,28 @@ TEST_CASE("cmx topo-expand reports stuck on the knotted hole in every order (exi
   CHECK(bing.exit_code == 0);
   CHECK(json_has(bing.out, "\"stuck\": true"));
   CHECK(json_integer(bing.out, "sequence_length") == 0);
+  // The same house in a full box: the index order meets it after every other interior vertex
+  // (a NOBUENOSS of exactly the house's vertices); strict-index is the same order here (there
+  // are no classes in topological expansion); the default order completes.
+  const auto in_box = run_cmx({"topo-expand", "--builtin", "bings-house-box", "--order", "index", "--json"});
+  CHECK(in_box.exit_code == 0);
+  CHECK(json_has(in_box.out, "\"stuck\": true"));
+  const long left = json_integer(in_box.out, "remaining_vertices");
+  CHECK(left > 0);
+  CHECK(json_integer(in_box.out, "sequence_length") + left == json_integer(in_box.out, "initial_cluster_vertices"));
+  CHECK(json_integer(in_box.out, "remaining_euler") == 1);
+  const auto strict = run_cmx({"topo-expand", "--builtin", "bings-house-box", "--order", "strict-index", "--json"});
+  CHECK(strict.exit_code == 0);
+  CHECK(json_integer(strict.out, "remaining_vertices") == left);  // no classes here: the same order
+  const auto box_default = run_cmx({"topo-expand", "--builtin", "bings-house-box", "--json"});
+  CHECK(json_has(box_default.out, "\"stuck\": false"));
+  // cmx generate-mesh writes the same ball, numbering included.
+  const std::string file = write_temp_file("", ".ovm");
+  std::remove(file.c_str());
+  REQUIRE(run_cmx({"generate-mesh", "--shape", "bings-house-box", "-o", file, "-q"}).exit_code == 0);
+  const auto from_file = run_cmx({"topo-expand", file, "--order", "index", "--json"});
+  CHECK(from_file.exit_code == 0);
+  CHECK(json_integer(from_file.out, "remaining_vertices") == left);
 }
 
 TEST_CASE("cmx topo-expand: usage errors exit 2") {
