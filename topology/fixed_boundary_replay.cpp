@@ -55,8 +55,11 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
     bool edge_of_cluster = false;
     if (st.kind != ExpansionStepKind::plain_vertex) {
       const int n = st.kind == ExpansionStepKind::edge_split ? 2 : 3;
-      bool all_cluster = true;
-      for (int a = 0; a < n; ++a) all_cluster = all_cluster && unexpanded[st.split[a]];
+      bool all_cluster = true, any_cluster = false;
+      for (int a = 0; a < n; ++a) {
+        all_cluster = all_cluster && unexpanded[st.split[a]];
+        any_cluster = any_cluster || unexpanded[st.split[a]];
+      }
       const bool on_boundary = on_mesh_boundary(m, st.split, n);
       const SplitResult s = n == 2 ? split_edge(m, st.split[0], st.split[1])
                                    : split_face(m, st.split[0], st.split[1], st.split[2]);
@@ -67,12 +70,12 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
       unexpanded.resize(m.num_vertices(), 0);
       if (on_boundary)
         ++r.boundary_splits;
-      else if (!all_cluster)
+      else if (!any_cluster)
         ++r.free_splits;
       else {
         ++r.cluster_splits;
         unexpanded[st.vertex] = 1;
-        edge_of_cluster = n == 2;
+        edge_of_cluster = n == 2 && all_cluster;
       }
     }
     if (!unexpanded[st.vertex]) continue;

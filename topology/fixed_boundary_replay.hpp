@@ -7,11 +7,11 @@
 // vertex, so this replays the same steps with the boundary expanded from the start:
 //   - a split of a simplex on the mesh boundary makes a boundary vertex (placed, geometrically,
 //     at the matching point of the target surface, as the paper does);
-//   - a split of an interior simplex with an expanded vertex makes an expanded vertex at once
-//     (placed at the centroid of the current positions, which leaves every tet's orientation a
-//     positive multiple of its parent's: a free split);
-//   - a split of an interior simplex of cluster vertices makes a cluster vertex, expanded when
-//     its step comes;
+//   - a split of an interior simplex of expanded vertices makes an expanded vertex at once
+//     (placed at the centroid of their positions, each child tet's orientation is a positive
+//     multiple of its parent's, and its cluster vertices are its parent's: a free split);
+//   - a split of an interior simplex with a cluster vertex makes a cluster vertex (placed at the
+//     shrink point, which keeps every invariant), expanded when its step comes;
 //   - a step whose vertex is already expanded (a boundary vertex, a free split) is skipped.
 // What it checks is the topological half of the fallback: that every vertex the replay expands
 // satisfies Eq. (1) when its turn comes, and that the cluster mesh ends empty. It also counts the
@@ -33,8 +33,8 @@ struct FixedBoundaryReplay {
   std::size_t expansions = 0;              // interior vertices the replay expanded (original or split)
   std::size_t eq1_failures = 0;            // of those, not satisfying Eq. (1) at their turn
   std::size_t boundary_splits = 0;         // splits of simplices on the mesh boundary
-  std::size_t free_splits = 0;             // splits of interior simplices with an expanded vertex
-  std::size_t cluster_splits = 0;          // splits of interior simplices of cluster vertices
+  std::size_t free_splits = 0;             // splits of interior simplices of expanded vertices
+  std::size_t cluster_splits = 0;          // splits of interior simplices with a cluster vertex
   std::size_t empty_cone_edge_splits = 0;  // cluster-edge splits facing the mirrored pair above
   std::size_t left = 0;                    // cluster vertices left at the end
   std::string first_failure;               // the first step that failed Eq. (1), when one did

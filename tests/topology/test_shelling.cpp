@@ -241,8 +241,10 @@ TEST_CASE("Bing's house in a box: shellable, yet greedy index-order expansion me
   CHECK(f.eq1_failures == 0);
   CHECK(f.left == 0);
   CHECK(f.expansions >= n - ball.boundary_vertices);
+  std::size_t split_steps = 0;
+  for (const ExpansionStep& st : e.steps) split_steps += st.kind != ExpansionStepKind::plain_vertex ? 1 : 0;
+  CHECK(f.boundary_splits + f.free_splits + f.cluster_splits == split_steps);
   CHECK(f.boundary_splits > 0);
-  CHECK(f.free_splits > 0);
   CHECK(f.cluster_splits > 0);
   // The steps whose cone is empty while the split edge's ends sit at the shrink point.
   CHECK(f.empty_cone_edge_splits > 0);
