@@ -4,10 +4,13 @@
 //
 // The fallback applies only to shellable inputs: Alg. 2 turns a shelling into an expansion
 // sequence. The search is greedy (topology/shelling.hpp) and bounded; not finding a shelling does
-// not prove that none exists, but both NOBUENOSS inputs the project knows (Furch's knotted hole,
-// which is not shellable, and the ball around Bing's house) defeat it. Replaying a shelling
-// geometrically is not built: docs/algorithm/expansion.md records why the paper's Alg. 2 does not keep the
-// method's invariants as stated, and the attempts made. So a NOBUENOSS always ends as `stuck`;
+// not prove that none exists, but the NOBUENOSS inputs that `cmx map` meets here (Furch's knotted
+// hole, which is not shellable, and the thin ball around Bing's house) defeat it. Bing's house in
+// a full box is shellable and meets its NOBUENOSS in topological index order, but no geometric
+// run reaches it. Replaying a shelling geometrically is not built: docs/algorithm/expansion.md
+// records why the paper's Alg. 2 does not keep the method's invariants as stated (its topological
+// half does hold with the boundary in place: topology/fixed_boundary_replay.hpp), and the
+// attempts made. So a NOBUENOSS always ends as `stuck`;
 // this stage says whether the input is known to be shellable, which is what a user can act on
 // (a non-shellable input needs remeshing, a shellable one is a case for the missing replay).
 #include <cstddef>
