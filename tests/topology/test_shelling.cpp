@@ -11,6 +11,7 @@
 #include "topology/mesh_edits.hpp"
 #include "topology/nobuenoss.hpp"
 #include "topology/shelling.hpp"
+#include "topology/topological_expansion.hpp"
 #include "topo_test_util.hpp"
 
 using namespace cmx::topology;
