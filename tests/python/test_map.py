@@ -109,6 +109,14 @@ def test_options_reach_the_run(ball):
     assert "expansion" in {p.phase for p in seen}
 
 
+def test_strict_index_order(ball):
+    # The planned order (rank before class) maps too, and a misspelt order is an error.
+    V, T = ball
+    check_map(cmx.map(V, T, shape="tet", init="shrink", order="strict-index"), V, T)
+    with pytest.raises(cmx.InvalidOptions, match="strict_index"):
+        cmx.map(V, T, shape="tet", init="shrink", order="strict_index")
+
+
 def test_given_initial_target(ball):
     V, T = ball
     r0 = cmx.map(V, T, shape="sphere")
