@@ -26,6 +26,12 @@ inline constexpr std::size_t doubles_remap_passes = 3;
 inline constexpr std::size_t vertex_budget_floor = 200000;
 inline constexpr std::size_t vertex_budget_per_input_vertex = 50;
 
+// Smoothing period (expansions) turned on for the attempts after a runaway restart, when the run
+// did not ask for smoothing itself: random orders on Freudenthal grids of 4,807 and 6,859
+// interior vertices churn until the time limit without it and map with --smooth 10
+// (bench/results/issue21-thin-combinatorial.md).
+inline constexpr std::size_t restart_smooth_every = 10;
+
 // The float Chebyshev LP of a cone, relative to the rows' scale (expansion/placement.hpp): a
 // radius above `cone_open_radius` is a clearly open kernel (then a float centre is worth trying
 // before the certified LP); at most `cone_closed_radius` is most likely empty (an exact proof of

@@ -8,6 +8,7 @@
 #include "algorithm/expansion/subcluster.hpp"
 #include "algorithm/expansion/trace_row.hpp"
 #include "algorithm/map_error.hpp"
+#include "algorithm/tuning.hpp"
 #include "algorithm/verify/invariants.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
@@ -377,6 +378,9 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
     stats = std::move(back->stats);
     stats.expansion_restarts = restart + 1;
     s.order = topology::ExpansionOrder{topology::ExpansionOrderKind::random, restart + 1};
+    // A restart means the refinement churned; smoothing (paper Sec. 4.2.4) re-centres the
+    // expanded vertices whose placement makes later cones empty.
+    if (s.smooth_every == 0) s.smooth_every = tuning::restart_smooth_every;
   }
 }
 

@@ -79,7 +79,8 @@ struct ExpansionOutcome {
 // same ball), or 1,024 + L / 4 expansions have not made the cluster smaller than its smallest
 // size L in this attempt (a stall: on Furch's knotted hole the refinement expands only the
 // vertices it pushed itself while the bits grow, up to the time limit), it goes back to the copy
-// and continues with the tie-breaks of random:K (K = 1, 2, ...), at most max_restarts times;
+// and continues with the tie-breaks of random:K (K = 1, 2, ...) and, unless the run smooths
+// already, smoothing every tuning::restart_smooth_every expansions, at most max_restarts times;
 // after that it runs on without the bounds, except that a stall then ends the run as `stuck`
 // with the figures. A stall where topological expansion from the cluster mesh left meets a
 // NOBUENOSS in four orders ends the run at once, as a NOBUENOSS (nobuenoss_ahead). An attempt
