@@ -150,3 +150,17 @@ TEST_CASE("Rudin's and Ziegler's balls: where bends and pushes fail, the shellin
   }
   CHECK(shelled >= 3);
 }
+
+TEST_CASE("after a runaway restart the loop smooths, and Rudin's ball maps onto a stiff tet") {
+  // Without smoothing after its restarts this run stalled ("stalled: 46 cluster vertices left
+  // (after 8 restarts)") with every binary before it; the run itself asks for no smoothing.
+  const alg::MapProblem p = combinatorial_problem(cmx::test::rudin_ball(), cmx::generators::BoundaryShape::stiff_tet);
+  alg::MapOptions o;
+  o.combinatorial = true;
+  o.time_limit_seconds = 600;  // a bound for the test only
+  REQUIRE(o.smooth_every == 0);
+  const alg::MapResult r = alg::map_to_domain(p, o);
+  check_realisation(p, r);
+  CHECK(r.stats.expansion_restarts >= 1);
+  CHECK(r.stats.smoothing_moves > 0);
+}
