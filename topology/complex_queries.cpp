@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <utility>
 
 #include "topology/union_find.hpp"
 
@@ -138,6 +139,20 @@ std::vector<TetId> tets_around_face(const TetMesh& m, VertexId a, VertexId b, Ve
   for (TetId t : m.tets_of(a))
     if (contains(m.tet(t), b) && contains(m.tet(t), c)) out.push_back(t);
   return out;
+}
+
+bool edge_on_boundary(const TetMesh& m, VertexId a, VertexId b) {
+  std::vector<std::pair<VertexId, int>> faces;  // third vertex of each face (a, b, x) -> its tets
+  for (TetId t : tets_around_edge(m, a, b))
+    for (VertexId x : m.tet(t)) {
+      if (x == a || x == b) continue;
+      auto it = std::find_if(faces.begin(), faces.end(), [x](const auto& f) { return f.first == x; });
+      if (it == faces.end())
+        faces.emplace_back(x, 1);
+      else
+        ++it->second;
+    }
+  return std::any_of(faces.begin(), faces.end(), [](const auto& f) { return f.second == 1; });
 }
 
 std::vector<VertexId> vertex_neighbors(const TetMesh& m, VertexId v) {

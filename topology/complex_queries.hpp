@@ -31,6 +31,8 @@ struct SimplexSet {
 [[nodiscard]] std::vector<TetId> tets_around_edge(const TetMesh& m, VertexId a, VertexId b);
 [[nodiscard]] std::vector<TetId> tets_around_face(const TetMesh& m, VertexId a, VertexId b,
                                                   VertexId c);
+// Edge ab lies on the boundary: some face through it is in one live tet only.
+[[nodiscard]] bool edge_on_boundary(const TetMesh& m, VertexId a, VertexId b);
 // Vertices sharing a tet with v (v excluded), ascending.
 [[nodiscard]] std::vector<VertexId> vertex_neighbors(const TetMesh& m, VertexId v);
 

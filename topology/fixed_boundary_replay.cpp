@@ -11,23 +11,9 @@
 namespace cmx::topology {
 namespace {
 
-std::size_t tets_with_face(const TetMesh& m, VertexId a, VertexId b, VertexId c) {
-  std::size_t n = 0;
-  for (TetId t : m.tets_of(a))
-    if (const Tet x = m.tet(t); contains(x, b) && contains(x, c)) ++n;
-  return n;
-}
-
 // A face is on the boundary when one tet has it; an edge when one of its faces is.
 bool on_mesh_boundary(const TetMesh& m, const std::array<VertexId, 3>& s, int n) {
-  if (n == 3) return tets_with_face(m, s[0], s[1], s[2]) == 1;
-  for (TetId t : m.tets_of(s[0])) {
-    const Tet x = m.tet(t);
-    if (!contains(x, s[1])) continue;
-    for (VertexId c : x)
-      if (c != s[0] && c != s[1] && tets_with_face(m, s[0], s[1], c) == 1) return true;
-  }
-  return false;
+  return n == 3 ? tets_around_face(m, s[0], s[1], s[2]).size() == 1 : edge_on_boundary(m, s[0], s[1]);
 }
 
 // Split vertex m of cluster edge (x, y): does a tet (m, ., s, t) with s, t expanded exist?

@@ -13,10 +13,10 @@ std::uint64_t splitmix(std::uint64_t x) {
 
 }  // namespace
 
-CandidateQueue::CandidateQueue(Embedding& e, topology::ExpansionOrder order, const std::vector<std::uint32_t>* rank)
+CandidateQueue::CandidateQueue(Embedding& e, topology::ExpansionOrder order, std::size_t planned)
     : e_(e),
       order_(order),
-      rank_(rank),
+      planned_(planned),
       version_(e.properties.make<std::uint32_t>(e.num_vertices(), 0)),
       is_marked_(e.properties.make<char>(e.num_vertices(), 0)) {}
 
@@ -57,19 +57,19 @@ std::optional<Entry> CandidateQueue::pop() {
 }
 
 // The class comes first: refinement only when no simple expansion is left, whatever the order
-// among equals (paper Sec. 4.1.2 for `priority`). A planned order (rank) comes before the class:
+// among equals (paper Sec. 4.1.2 for `priority`). A planned order comes before the class:
 // the plan's next vertex is refined before any other is expanded simply, since expanding others
 // first is what can leave a NOBUENOSS.
 std::array<std::int64_t, 4> CandidateQueue::key(Kind kind, int k, std::uint32_t expanded_neighbors,
                                                 VertexId v) const {
-  if (rank_) {
-    const std::int64_t r = kind == Kind::automatic || v >= rank_->size() ? 0 : (*rank_)[v];
+  if (planned_ > 0) {
+    const std::int64_t r = kind == Kind::automatic || v >= planned_ ? 0 : std::int64_t(v) + 1;
     const std::int64_t tie =
         order_.kind == topology::ExpansionOrderKind::random ? std::int64_t(splitmix(order_.seed ^ splitmix(v)) >> 1) : v;
     return {r, std::int64_t(kind), 0, tie};
   }
   switch (order_.kind) {
-    case topology::ExpansionOrderKind::strict_index:  // ranked: expand_cluster gives the rank
+    case topology::ExpansionOrderKind::strict_index:  // planned: expand_cluster sets planned_
     case topology::ExpansionOrderKind::index:
       return {std::int64_t(kind), 0, 0, v};
     case topology::ExpansionOrderKind::random:

@@ -1,7 +1,7 @@
 #pragma once
 // The candidates of paper Alg. 1 line 5: the cluster vertices by class, then by the order of
-// Sec. 4.1.2 (or `index`, `random:SEED`); with a rank (a planned order: `strict-index`, or the
-// replay of a shelling) by rank first and class second. In a priority queue with lazy deletion (an entry is stale
+// Sec. 4.1.2 (or `index`, `random:SEED`); in the planned order `strict-index` by vertex id first
+// and class second. In a priority queue with lazy deletion (an entry is stale
 // once its vertex's version has moved on, or once the vertex left the cluster), and the set of
 // vertices whose star changed since they were last classified. Classification itself, which needs
 // the cones and the LPs, is the loop's (ClusterExpander::evaluate, cluster_expansion.cpp).
@@ -30,10 +30,10 @@ struct Entry {
 
 class CandidateQueue {
  public:
-  // The per-vertex state is a property of `e` and grows with it. `rank` (may be null; must
-  // outlive the queue): a planned order, lower first; vertices beyond it (added during the run)
-  // and automatic expansions have rank 0, and `order` breaks ties.
-  CandidateQueue(Embedding& e, topology::ExpansionOrder order, const std::vector<std::uint32_t>* rank = nullptr);
+  // The per-vertex state is a property of `e` and grows with it. `planned` > 0: a planned order,
+  // the vertices below it by id before the class; vertices added during the run and automatic
+  // expansions come first, and `order` breaks ties among them.
+  CandidateQueue(Embedding& e, topology::ExpansionOrder order, std::size_t planned = 0);
 
   // v is to be classified again (once, however often it is marked before that).
   void mark(VertexId v);
@@ -55,7 +55,7 @@ class CandidateQueue {
 
   const Embedding& e_;
   topology::ExpansionOrder order_;
-  const std::vector<std::uint32_t>* rank_;
+  std::size_t planned_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue_;
   VertexProperty<std::uint32_t> version_;  // of v's queue entries
   VertexProperty<char> is_marked_;         // 1: v waits in marked_

@@ -54,7 +54,7 @@ class ClusterExpander {
         s_(s),
         stats_(stats),
         watch_runaway_(watch_runaway),
-        queue_(e, s.order, s.rank.get()),
+        queue_(e, s.order, s.planned_vertices),
         cached_(e.properties.make<std::optional<Placement>>(e.num_vertices())),
         float_centre_(e.properties.make<std::optional<std::array<double, 3>>>(e.num_vertices())),
         guess_wrong_(e.properties.make<char>(e.num_vertices(), 0)) {}

@@ -353,11 +353,7 @@ void ClusterExpander::smooth_vertex(VertexId b) {
 
 ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats) {
   ExpansionSettings s = settings;
-  if (s.order.kind == topology::ExpansionOrderKind::strict_index && !s.rank) {
-    auto id = std::make_shared<std::vector<std::uint32_t>>(e.num_vertices());
-    for (std::size_t v = 0; v < id->size(); ++v) (*id)[v] = static_cast<std::uint32_t>(v + 1);
-    s.rank = std::move(id);
-  }
+  if (s.order.kind == topology::ExpansionOrderKind::strict_index) s.planned_vertices = e.num_vertices();
   std::optional<detail::Checkpoint> first;  // the state before any expansion
   if (settings.max_restarts > 0) first = detail::Checkpoint{e, stats, 0};
   for (std::size_t restart = 0;; ++restart) {

@@ -28,7 +28,6 @@
 // refinement budget or the time limit.
 #include <chrono>
 #include <functional>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,9 +41,9 @@ namespace cmx::algorithm {
 struct ExpansionSettings {
   PlacementOptions placement;
   topology::ExpansionOrder order;
-  // A planned order (CandidateQueue): rank per vertex, lower first, before the class. Set by the
-  // shelling replay (refinement/shelling_replay.hpp); `strict-index` makes it the vertex id.
-  std::shared_ptr<const std::vector<std::uint32_t>> rank;
+  // `strict-index` (CandidateQueue): the vertices below this count come by id before the class;
+  // expand_cluster sets it to the vertex count at the start (0: no planned order).
+  std::size_t planned_vertices = 0;
   bool check = false;
   RunControl* control = nullptr;  // polled before every step: the time limit and the stop hook
   std::chrono::steady_clock::time_point start;

@@ -33,12 +33,7 @@ int dangling_count(const ConeBase& base, const std::unordered_set<VertexId>& wit
 // Edge (a, b) lies on the mesh boundary: some face through it is in one tet only. A split there
 // would make a boundary vertex that the boundary does not prescribe, so such edges are not split.
 bool on_mesh_boundary(const Embedding& e, VertexId a, VertexId b) {
-  if (!e.boundary[a] || !e.boundary[b]) return false;
-  std::unordered_map<VertexId, int> faces;  // third vertex of each face (a, b, x) -> tets on it
-  for (TetId t : topology::tets_around_edge(e.mesh, a, b))
-    for (VertexId x : e.mesh.tet(t))
-      if (x != a && x != b) ++faces[x];
-  return std::any_of(faces.begin(), faces.end(), [](const auto& f) { return f.second == 1; });
+  return e.boundary[a] && e.boundary[b] && topology::edge_on_boundary(e.mesh, a, b);
 }
 
 // The fan of w that refinement keeps: the base triangles through w whose other edges form the
