@@ -1,10 +1,13 @@
-// cmx topo-expand (MESH | --builtin NAME) [--order priority|index|strict-index|random:SEED] [--json]:
-// topological expansion (paper Sec. 5.1) of a mesh's interior vertices, by Eq. (1) alone.
+// cmx topo-expand (MESH | --builtin NAME) [--order priority|index|strict-index|random:SEED]
+// [--fallback shelling|none] [--json]: topological expansion (paper Sec. 5.1) of a mesh's interior
+// vertices, by Eq. (1) alone, and when it is stuck the shelling fallback of paper Sec. 4.3.
 //
 // The mesh is read with its file's vertex order kept (no geometric orientation check: this is a
 // combinatorial question), then validated by topology::check_ball, which also checks that the
 // tets are consistently oriented across their faces. The cluster mesh starts as the interior
-// vertices and topology::topological_expansion expands it greedily in the chosen order.
+// vertices and topology::topological_expansion expands it greedily in the chosen order. When that
+// gets stuck, topology::shelling_fallback looks for a shelling and replays it by Alg. 2 from the
+// start with the boundary in place (topology/fixed_boundary_replay.hpp), topology only.
 //
 // Exit codes: 0 whenever the expansion ran, stuck or not (being stuck is a result, reported in
 // the output, not an error); 2 bad command line; 3 unreadable or malformed file ("file:line:
@@ -30,6 +33,7 @@
 #include "topology/ball_check.hpp"
 #include "topology/chords.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/fixed_boundary_replay.hpp"
 #include "topology/generators.hpp"
 #include "topology/nobuenoss.hpp"
 #include "topology/topological_expansion.hpp"
@@ -40,11 +44,15 @@ namespace {
 using topology::TetMesh;
 
 const HelpText help = {
-    "usage: cmx topo-expand (MESH | --builtin NAME) [--order ORDER] [--raw] [--json]\n",
+    "usage: cmx topo-expand (MESH | --builtin NAME) [--order ORDER] [--fallback shelling|none] [--raw]\n"
+    "                       [--json]\n",
     "Topological expansion (paper Sec. 5.1): expands the cluster mesh of the interior vertices\n"
     "greedily by Eq. (1) alone (no geometry) and reports the sequence length, the expansions by\n"
     "kind (k-manifold k = 1, 2, 3, other Eq. (1), automatic), whether it got stuck, and when stuck\n"
-    "the remaining cluster mesh (vertices, Euler characteristic, connected components).\n",
+    "the remaining cluster mesh (vertices, Euler characteristic, connected components). When it is\n"
+    "stuck, the fallback of paper Sec. 4.3 looks for a shelling of the mesh (8 greedy attempts) and\n"
+    "replays it as an expansion sequence (Alg. 2) from the start, with the boundary in place,\n"
+    "checking Eq. (1) at every step; it reports whether the replay expands every interior vertex.\n",
     "Exit status: 0 when the expansion ran, stuck or not (stuck is a result, not an error);\n"
     "2 bad command line; 3 unreadable or malformed MESH; 4 MESH is not a ball.\n"};
 
@@ -99,8 +107,47 @@ TetMesh builtin_mesh(const std::string& name) {
               "' (knotted-hole, unknotted-hole, bings-house, bings-house-box, grid:NX,NY,NZ)");
 }
 
+void print_fallback_json(const std::optional<topology::ShellingFallback>& f) {
+  if (!f) {
+    std::printf(" \"fallback\": null,\n");
+    return;
+  }
+  const topology::FixedBoundaryReplay& r = f->replay;
+  std::printf(
+      " \"fallback\": {\"shelling_found\": %s, \"attempts\": %zu, \"best_removed\": %zu, \"replayed\": %s,\n"
+      "  \"completed\": %s, \"expansions\": %zu, \"input_expansions\": %zu, \"eq1_failures\": %zu, "
+      "\"left\": %zu,\n"
+      "  \"boundary_splits\": %zu, \"cluster_splits\": %zu, \"free_splits\": %zu, "
+      "\"empty_cone_edge_splits\": "
+      "%zu,\n"
+      "  \"message\": %s},\n",
+      f->shelling_found ? "true" : "false", f->attempts, f->best_removed, f->replayed ? "true" : "false",
+      f->replayed && r.ok ? "true" : "false", r.expansions, r.input_expansions, r.eq1_failures, r.left,
+      r.boundary_splits, r.cluster_splits, r.free_splits, r.empty_cone_edge_splits,
+      json_quote(f->message).c_str());
+}
+
+void print_fallback_text(const std::optional<topology::ShellingFallback>& f, double seconds) {
+  if (!f) return;
+  std::printf("fallback (paper Sec. 4.3, topology only): %s\n", f->message.c_str());
+  if (f->replayed) {
+    const topology::FixedBoundaryReplay& r = f->replay;
+    std::printf(
+        "replay: %zu expansions (%zu input vertices, %zu split vertices), %zu failing Eq. (1), %zu cluster "
+        "vertices left\n",
+        r.expansions, r.input_expansions, r.expansions - r.input_expansions, r.eq1_failures, r.left);
+    std::printf(
+        "replay splits: %zu of boundary simplices, %zu with a cluster vertex, %zu of expanded simplices; %zu "
+        "expansions split a cluster edge facing a mirrored pair (an empty geometric cone)\n",
+        r.boundary_splits, r.cluster_splits, r.free_splits, r.empty_cone_edge_splits);
+  }
+  std::printf("time: %.3f s (fallback)\n", seconds);
+}
+
 void print_report(const Input& in, const topology::ExpansionOrder& order,
-                  const topology::TopologicalExpansionResult& r, double seconds, bool json) {
+                  const topology::TopologicalExpansionResult& r, double seconds,
+                  const std::optional<topology::ShellingFallback>& fallback, double fallback_seconds,
+                  bool json) {
   const auto& k = r.k_manifold_counts;
   const std::string order_name = topology::to_string(order);
   if (json) {
@@ -117,7 +164,8 @@ void print_report(const Input& in, const topology::ExpansionOrder& order,
         "%zu,\n",
         r.stuck ? "true" : "false", r.remaining.size(), static_cast<long long>(r.remaining_euler),
         r.remaining_components);
-    std::printf(" \"seconds\": %.6f}\n", seconds);
+    print_fallback_json(fallback);
+    std::printf(" \"seconds\": %.6f, \"fallback_seconds\": %.6f}\n", seconds, fallback_seconds);
     return;
   }
   std::printf("mesh: %s (%zu vertices, %zu tets; a ball)\n", in.source.c_str(), in.mesh.num_vertices(),
@@ -137,6 +185,7 @@ void print_report(const Input& in, const topology::ExpansionOrder& order,
   else
     std::printf("stuck: no (every cluster vertex expanded)\n");
   std::printf("time: %.3f s (expansion)\n", seconds);
+  print_fallback_text(fallback, fallback_seconds);
 }
 
 Input read_input(const std::string& path, const std::string& builtin) {
@@ -158,6 +207,7 @@ int run(const std::vector<std::string>& args) {
   std::string path, builtin;
   topology::ExpansionOrder order = *topology::parse_expansion_order("priority");
   bool json = false, raw = false;
+  std::string fallback_name = "shelling";
   CommandLine line("topo-expand", help);
   CLI::App& app = line.app();
   app.add_option("MESH", path,
@@ -175,6 +225,11 @@ int run(const std::vector<std::string>& args) {
                    "priority (default: k = 1, 2, 3, other; then more expanded neighbours;\n"
                    "then lower id), index (lowest id; strict-index is the same here),\n"
                    "random:SEED (seeded permutation)");
+  app.add_option("--fallback", fallback_name,
+                 "shelling (default: when stuck, look for a shelling of the mesh and replay\n"
+                 "it by Alg. 2 from the start, boundary in place) or none")
+      ->check(CLI::IsMember({"shelling", "none"}))
+      ->type_name("KIND");
   app.add_flag("--raw", raw,
                "skip the chord splits that first make the interior mesh simply\n"
                "connected (by default chords are split as cmx map does: only those\n"
@@ -191,8 +246,13 @@ int run(const std::vector<std::string>& args) {
   const auto start = std::chrono::steady_clock::now();
   const topology::TopologicalExpansionResult result =
       topology::topological_expansion(in.mesh, order, interior);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  print_report(in, order, result, seconds, json);
+  const auto expanded = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(expanded - start).count();
+  std::optional<topology::ShellingFallback> fallback;
+  if (result.stuck && fallback_name == "shelling") fallback = topology::shelling_fallback(in.mesh);
+  const double fallback_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - expanded).count();
+  print_report(in, order, result, seconds, fallback, fallback_seconds, json);
   std::fflush(stdout);
   return exit_ok;
 }

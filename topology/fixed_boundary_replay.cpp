@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
 #include <vector>
 
 #include "topology/cluster_links.hpp"
@@ -66,6 +67,7 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
     }
     if (!unexpanded[st.vertex]) continue;
     ++r.expansions;
+    if (st.vertex < input.num_vertices()) ++r.input_expansions;
     if (edge_of_cluster && faces_mirrored_pair(m, st.vertex, unexpanded)) ++r.empty_cone_edge_splits;
     if (!st.automatic && !is_topologically_expandable(m, st.vertex, unexpanded, ws)) {
       if (r.eq1_failures++ == 0)
@@ -77,6 +79,43 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
   r.left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
   r.ok = r.eq1_failures == 0 && r.left == 0;
   return r;
+}
+
+ShellingFallback shelling_fallback(const TetMesh& input, const ShellingOptions& options) {
+  ShellingFallback f;
+  const ShellingResult shelling = find_shelling(input, options);
+  f.shelling_found = shelling.found;
+  f.attempts = shelling.attempts;
+  f.best_removed = shelling.best_removed;
+  f.stopped_at_deadline = shelling.stopped_at_deadline;
+  const std::string tets = std::to_string(input.num_tets());
+  if (!shelling.found) {
+    f.message = "no shelling found in " + std::to_string(f.attempts) + " greedy attempts (at most " +
+                std::to_string(f.best_removed) + " of " + tets + " tets peeled" +
+                (f.stopped_at_deadline ? ", cut short" : "") + "): the input may not be shellable";
+    return f;
+  }
+  const ShellingExpansion sequence = shelling_to_expansion_sequence(input, shelling.order);
+  if (!sequence.ok) {
+    f.message =
+        "a shelling of the " + tets + " tets was found, but Alg. 2 could not convert it: " + sequence.message;
+    return f;
+  }
+  f.replayed = true;
+  f.replay = replay_with_fixed_boundary(input, sequence);
+  const std::string found = "a shelling of the " + tets + " tets found in " + std::to_string(f.attempts) +
+                            (f.attempts == 1 ? " greedy attempt" : " greedy attempts");
+  if (f.replay.ok)
+    f.message =
+        found +
+        "; Alg. 2 replayed from the start with the boundary in place expands every interior vertex (" +
+        std::to_string(f.replay.expansions) + " expansions, " + std::to_string(f.replay.cluster_splits) +
+        " of them split vertices)";
+  else
+    f.message = found + ", but its replay failed: " +
+                (f.replay.first_failure.empty() ? std::to_string(f.replay.left) + " cluster vertices left"
+                                                : f.replay.first_failure);
+  return f;
 }
 
 }  // namespace cmx::topology

@@ -31,6 +31,7 @@ namespace cmx::topology {
 struct FixedBoundaryReplay {
   bool ok = false;                         // every expansion satisfied Eq. (1) and the cluster ended empty
   std::size_t expansions = 0;              // interior vertices the replay expanded (original or split)
+  std::size_t input_expansions = 0;        // of those, vertices of the input (the others split)
   std::size_t eq1_failures = 0;            // of those, not satisfying Eq. (1) at their turn
   std::size_t boundary_splits = 0;         // splits of simplices on the mesh boundary
   std::size_t free_splits = 0;             // splits of interior simplices of expanded vertices
@@ -45,5 +46,22 @@ struct FixedBoundaryReplay {
 // Eq. (1) tests, one per expansion.
 [[nodiscard]] FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input,
                                                              const ShellingExpansion& sequence);
+
+// The fallback of paper Sec. 4.3 for a run without geometry (cmx topo-expand): look for a
+// shelling of `input` (find_shelling, bounded by `options`) and, when one is found, convert it by
+// Alg. 2 and replay it from the start with the boundary in place. The replay does not continue
+// the greedy run that got stuck: as in the paper, the sequence is planned for the whole input.
+struct ShellingFallback {
+  bool shelling_found = false;
+  std::size_t attempts = 0;      // greedy shelling attempts made
+  std::size_t best_removed = 0;  // most tets one attempt removed (all of them when found)
+  bool stopped_at_deadline = false;
+  bool replayed = false;       // a sequence was converted and replayed
+  FixedBoundaryReplay replay;  // meaningful when `replayed`
+  std::string message;         // one sentence: what was found and how the replay ended
+};
+
+// Precondition: check_ball(input).ok. O(attempts * T log T) plus the replay.
+[[nodiscard]] ShellingFallback shelling_fallback(const TetMesh& input, const ShellingOptions& options = {});
 
 }  // namespace cmx::topology

@@ -9,8 +9,8 @@
 // a full box is shellable and meets its NOBUENOSS in topological index order, but no geometric
 // run reaches it. Replaying a shelling geometrically is not built: docs/algorithm/expansion.md
 // records why the paper's Alg. 2 does not keep the method's invariants as stated (its topological
-// half does hold with the boundary in place: topology/fixed_boundary_replay.hpp), and the
-// attempts made. So a NOBUENOSS always ends as `stuck`;
+// half does hold with the boundary in place: topology/fixed_boundary_replay.hpp, which
+// `cmx topo-expand` runs when stuck), and the attempts made. So a NOBUENOSS always ends as `stuck`;
 // this stage says whether the input is known to be shellable, which is what a user can act on
 // (a non-shellable input needs remeshing, a shellable one is a case for the missing replay).
 #include <cstddef>

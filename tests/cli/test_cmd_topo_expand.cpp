@@ -30,7 +30,9 @@ long json_integer(const std::string& json, const char* key) {
   return at == std::string::npos ? -1 : std::strtol(json.c_str() + at, nullptr, 10);
 }
 
-bool json_has(const std::string& json, const std::string& text) { return json.find(text) != std::string::npos; }
+bool json_has(const std::string& json, const std::string& text) {
+  return json.find(text) != std::string::npos;
+}
 
 // A Medit file of an n x n x n Kuhn grid: vertex (i,j,k) at the integer point, 6 tets per cell
 // along the paths corner -> +e_a -> +e_b -> +e_c, each listed positively (odd paths reversed).
@@ -40,8 +42,10 @@ std::string grid_medit(int n) {
   int num_tets = 0;
   for (int k = 0; k <= n; ++k)
     for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) vertices += std::to_string(i) + ' ' + std::to_string(j) + ' ' + std::to_string(k) + " 0\n";
-  const std::array<std::array<int, 3>, 6> paths = {{{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
+      for (int i = 0; i <= n; ++i)
+        vertices += std::to_string(i) + ' ' + std::to_string(j) + ' ' + std::to_string(k) + " 0\n";
+  const std::array<std::array<int, 3>, 6> paths = {
+      {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}}};
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
@@ -58,13 +62,15 @@ std::string grid_medit(int n) {
                   std::to_string(tet[3]) + " 0\n";
           ++num_tets;
         }
-  return "MeshVersionFormatted 1\nDimension 3\nVertices\n" + std::to_string((n + 1) * (n + 1) * (n + 1)) + "\n" + vertices +
-         "Tetrahedra\n" + std::to_string(num_tets) + "\n" + tets + "End\n";
+  return "MeshVersionFormatted 1\nDimension 3\nVertices\n" + std::to_string((n + 1) * (n + 1) * (n + 1)) +
+         "\n" + vertices + "Tetrahedra\n" + std::to_string(num_tets) + "\n" + tets + "End\n";
 }
 
-// `cmx topo-expand --builtin NAME --order ORDER --json`, which must exit 0; returns stdout.
-std::string expand_json(const char* builtin, const char* order) {
-  const auto r = run_cmx({"topo-expand", "--builtin", builtin, "--order", order, "--json"});
+// `cmx topo-expand --builtin NAME --order ORDER --json`, which must exit 0; returns stdout. The
+// shelling fallback is off unless asked for: it is tested on its own below.
+std::string expand_json(const char* builtin, const char* order, const char* fallback = "none") {
+  const auto r =
+      run_cmx({"topo-expand", "--builtin", builtin, "--order", order, "--fallback", fallback, "--json"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   return r.out;
@@ -74,8 +80,8 @@ std::string expand_json(const char* builtin, const char* order) {
 // expanded remains.
 void check_consistent(const std::string& json) {
   const long length = json_integer(json, "sequence_length");
-  CHECK(length == json_integer(json, "1") + json_integer(json, "2") + json_integer(json, "3") + json_integer(json, "other") +
-                      json_integer(json, "automatic"));
+  CHECK(length == json_integer(json, "1") + json_integer(json, "2") + json_integer(json, "3") +
+                      json_integer(json, "other") + json_integer(json, "automatic"));
   CHECK(length + json_integer(json, "remaining_vertices") == json_integer(json, "initial_cluster_vertices"));
   CHECK(json_has(json, "\"seconds\": "));
 }
@@ -113,19 +119,24 @@ TEST_CASE("cmx topo-expand --json: one object with every documented key") {
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.front() == '{');
   CHECK(r.out.substr(r.out.size() - 2) == "}\n");
-  for (const char* key : {"source", "vertices", "tets", "order", "initial_cluster_vertices", "sequence_length", "k_manifold", "1", "2",
-                          "3", "other", "automatic", "stuck", "remaining_vertices", "remaining_euler", "remaining_components", "seconds"})
+  for (const char* key :
+       {"source", "vertices", "tets", "order", "initial_cluster_vertices", "sequence_length", "k_manifold",
+        "1", "2", "3", "other", "automatic", "stuck", "remaining_vertices", "remaining_euler",
+        "remaining_components", "fallback", "seconds", "fallback_seconds"})
     CHECK_MESSAGE(value_position(r.out, key) != std::string::npos, key);
   CHECK(json_has(r.out, "\"source\": \"builtin:grid:2,2,2\""));
   CHECK(json_integer(r.out, "vertices") == 27);
   CHECK(json_integer(r.out, "tets") == 48);
   CHECK(json_integer(r.out, "initial_cluster_vertices") == 1);
-  CHECK(json_integer(r.out, "automatic") == 1);  // a lone cluster vertex is expanded automatically
+  CHECK(json_integer(r.out, "automatic") == 1);        // a lone cluster vertex is expanded automatically
   CHECK(json_integer(r.out, "remaining_euler") == 0);  // the empty cluster mesh
   CHECK(json_integer(r.out, "remaining_components") == 0);
+  CHECK(json_has(r.out, "\"fallback\": null"));  // not stuck: no fallback ran
 }
 
-TEST_CASE("cmx topo-expand reports stuck on the knotted hole in every order (exit 0) and completes on the control") {
+TEST_CASE(
+    "cmx topo-expand reports stuck on the knotted hole in every order (exit 0) and completes on the "
+    "control") {
   for (const char* order : {"priority", "index", "random:1"}) {
     CAPTURE(order);
     const std::string json = expand_json("knotted-hole", order);
@@ -139,8 +150,9 @@ TEST_CASE("cmx topo-expand reports stuck on the knotted hole in every order (exi
     CHECK(json_integer(json, "remaining_components") == 1);
     check_consistent(json);
   }
-  const auto text = run_cmx({"topo-expand", "--builtin", "knotted-hole"});
+  const auto text = run_cmx({"topo-expand", "--builtin", "knotted-hole", "--fallback", "none"});
   CHECK(text.exit_code == 0);
+  CHECK(!json_has(text.out, "fallback"));
   CHECK(json_has(text.out, "stuck: yes: "));
   CHECK(json_has(text.out, "(Euler characteristic 1, b0 1), none satisfies Eq. (1)"));
   for (const char* order : {"priority", "index", "random:1"}) {
@@ -151,32 +163,64 @@ TEST_CASE("cmx topo-expand reports stuck on the knotted hole in every order (exi
     check_consistent(json);
   }
   // Bing's house: stuck before the first expansion.
-  const auto bing = run_cmx({"topo-expand", "--builtin", "bings-house", "--json"});
+  const auto bing = run_cmx({"topo-expand", "--builtin", "bings-house", "--fallback", "none", "--json"});
   CHECK(bing.exit_code == 0);
   CHECK(json_has(bing.out, "\"stuck\": true"));
   CHECK(json_integer(bing.out, "sequence_length") == 0);
   // The same house in a full box: the index order meets it after every other interior vertex
   // (a NOBUENOSS of exactly the house's vertices); strict-index is the same order here (there
   // are no classes in topological expansion); the default order completes.
-  const auto in_box = run_cmx({"topo-expand", "--builtin", "bings-house-box", "--order", "index", "--json"});
-  CHECK(in_box.exit_code == 0);
-  CHECK(json_has(in_box.out, "\"stuck\": true"));
-  const long left = json_integer(in_box.out, "remaining_vertices");
+  const std::string in_box = expand_json("bings-house-box", "index");
+  CHECK(json_has(in_box, "\"stuck\": true"));
+  const long left = json_integer(in_box, "remaining_vertices");
   CHECK(left > 0);
-  CHECK(json_integer(in_box.out, "sequence_length") + left == json_integer(in_box.out, "initial_cluster_vertices"));
-  CHECK(json_integer(in_box.out, "remaining_euler") == 1);
-  const auto strict = run_cmx({"topo-expand", "--builtin", "bings-house-box", "--order", "strict-index", "--json"});
-  CHECK(strict.exit_code == 0);
-  CHECK(json_integer(strict.out, "remaining_vertices") == left);  // no classes here: the same order
+  CHECK(json_integer(in_box, "sequence_length") + left == json_integer(in_box, "initial_cluster_vertices"));
+  CHECK(json_integer(in_box, "remaining_euler") == 1);
+  const std::string strict = expand_json("bings-house-box", "strict-index");
+  CHECK(json_integer(strict, "remaining_vertices") == left);  // no classes here: the same order
   const auto box_default = run_cmx({"topo-expand", "--builtin", "bings-house-box", "--json"});
   CHECK(json_has(box_default.out, "\"stuck\": false"));
   // cmx generate-mesh writes the same ball, numbering included.
   const std::string file = write_temp_file("", ".ovm");
   std::remove(file.c_str());
   REQUIRE(run_cmx({"generate-mesh", "--shape", "bings-house-box", "-o", file, "-q"}).exit_code == 0);
-  const auto from_file = run_cmx({"topo-expand", file, "--order", "index", "--json"});
+  const auto from_file = run_cmx({"topo-expand", file, "--order", "index", "--fallback", "none", "--json"});
   CHECK(from_file.exit_code == 0);
   CHECK(json_integer(from_file.out, "remaining_vertices") == left);
+}
+
+TEST_CASE(
+    "cmx topo-expand: when stuck, the shelling fallback replays Alg. 2 on the house box and finds no "
+    "shelling of the knot") {
+  // Bing's house in a box is shellable: the replay (from the start, boundary in place) expands
+  // every interior vertex of the input and the split vertices it makes, each satisfying Eq. (1).
+  const std::string box = expand_json("bings-house-box", "index", "shelling");
+  CHECK(json_has(box, "\"stuck\": true"));  // the greedy run's own verdict is kept
+  CHECK(json_has(box, "\"shelling_found\": true"));
+  CHECK(json_has(box, "\"replayed\": true"));
+  CHECK(json_has(box, "\"completed\": true"));
+  CHECK(json_integer(box, "eq1_failures") == 0);
+  CHECK(json_integer(box, "left") == 0);
+  CHECK(json_integer(box, "input_expansions") == json_integer(box, "initial_cluster_vertices"));
+  CHECK(json_integer(box, "expansions") ==
+        json_integer(box, "input_expansions") + json_integer(box, "cluster_splits"));
+  CHECK(json_integer(box, "cluster_splits") > 0);
+  CHECK(json_integer(box, "boundary_splits") > 0);
+  // The steps whose geometric half is empty are counted, so that the report says what cmx map
+  // could not replay (docs/algorithm/expansion.md).
+  CHECK(json_integer(box, "empty_cone_edge_splits") > 0);
+  CHECK(json_integer(box, "empty_cone_edge_splits") <= json_integer(box, "cluster_splits"));
+  // The knotted hole is not shellable: no attempt peels it, and nothing is replayed.
+  const auto knot = run_cmx({"topo-expand", "--builtin", "knotted-hole"});
+  INFO(knot.err);
+  REQUIRE(knot.exit_code == 0);
+  CHECK(json_has(knot.out, "stuck: yes: "));
+  CHECK(
+      json_has(knot.out, "fallback (paper Sec. 4.3, topology only): no shelling found in 8 greedy attempts"));
+  CHECK(json_has(knot.out, "the input may not be shellable"));
+  CHECK(!json_has(knot.out, "replay:"));
+  // Not stuck: the fallback does not run.
+  CHECK(json_has(expand_json("bings-house-box", "priority", "shelling"), "\"fallback\": null"));
 }
 
 TEST_CASE("cmx topo-expand: usage errors exit 2") {
@@ -186,6 +230,9 @@ TEST_CASE("cmx topo-expand: usage errors exit 2") {
   CHECK(bad_order.out.empty());
   CHECK(run_cmx({"topo-expand", "--builtin", "grid:2,2,2", "--order", "random:"}).exit_code == 2);
   CHECK(run_cmx({"topo-expand", "--builtin", "grid:2,2,2", "--order"}).exit_code == 2);
+  const auto bad_fallback = run_cmx({"topo-expand", "--builtin", "grid:2,2,2", "--fallback", "flips"});
+  CHECK(bad_fallback.exit_code == 2);
+  CHECK(json_has(bad_fallback.err, "--fallback"));
   CHECK(run_cmx({"topo-expand"}).exit_code == 2);
   CHECK(run_cmx({"topo-expand", "a.vtk", "b.vtk"}).exit_code == 2);
   CHECK(run_cmx({"topo-expand", "a.vtk", "--builtin", "knotted-hole"}).exit_code == 2);
@@ -193,7 +240,8 @@ TEST_CASE("cmx topo-expand: usage errors exit 2") {
   const auto unknown = run_cmx({"topo-expand", "--builtin", "trefoil"});
   CHECK(unknown.exit_code == 2);
   CHECK(json_has(unknown.err, "unknown builtin 'trefoil'"));
-  for (const char* grid : {"grid:0,1,1", "grid:1,1", "grid:1,1,1,", "grid:a,1,1", "grid:100000,100000,100000"}) {
+  for (const char* grid :
+       {"grid:0,1,1", "grid:1,1", "grid:1,1,1,", "grid:a,1,1", "grid:100000,100000,100000"}) {
     CAPTURE(grid);
     const auto r = run_cmx({"topo-expand", "--builtin", grid});
     CHECK(r.exit_code == 2);
@@ -209,8 +257,9 @@ TEST_CASE("cmx topo-expand: unreadable input exits 3 with file:line and a non-ba
   const auto missing = run_cmx({"topo-expand", "/nonexistent/domain.ovm"});
   CHECK(missing.exit_code == 3);
   CHECK(json_has(missing.err, "/nonexistent/domain.ovm: "));
-  const auto malformed =
-      write_temp_file("# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 double\n0 0 0\n1 x 0\n", ".vtk");
+  const auto malformed = write_temp_file(
+      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 double\n0 0 0\n1 x 0\n",
+      ".vtk");
   const auto bad = run_cmx({"topo-expand", malformed});
   CHECK(bad.exit_code == 3);
   CHECK(bad.err.find("cmx topo-expand: " + malformed + ":7: ") == 0);
@@ -219,7 +268,8 @@ TEST_CASE("cmx topo-expand: unreadable input exits 3 with file:line and a non-ba
 
   // Two tets sharing only vertex 0: read fine, but not a manifold.
   const auto pinched = write_temp_file(
-      "MeshVersionFormatted 1\nDimension 3\nVertices\n7\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n-1 0 0 0\n0 -1 0 0\n0 0 -1 0\n"
+      "MeshVersionFormatted 1\nDimension 3\nVertices\n7\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n-1 0 0 0\n0 -1 "
+      "0 0\n0 0 -1 0\n"
       "Tetrahedra\n2\n1 2 3 4 0\n1 5 7 6 0\nEnd\n",
       ".mesh");
   const auto r = run_cmx({"topo-expand", pinched, "--json"});
@@ -228,7 +278,8 @@ TEST_CASE("cmx topo-expand: unreadable input exits 3 with file:line and a non-ba
   CHECK(r.out.empty());
   // Tets listed with inconsistent orientation across their common face: not a ball (combinatorial check).
   const auto twisted = write_temp_file(
-      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n"
+      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n0 0 0\n1 0 0\n0 1 "
+      "0\n0 0 1\n1 1 1\n"
       "CELLS 2 10\n4 0 1 2 3\n4 1 3 2 4\nCELL_TYPES 2\n10\n10\n",
       ".vtk");
   const auto t = run_cmx({"topo-expand", twisted});

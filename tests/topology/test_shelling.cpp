@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "topo_test_util.hpp"
 #include "topology/ball_check.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
@@ -12,7 +13,6 @@
 #include "topology/nobuenoss.hpp"
 #include "topology/shelling.hpp"
 #include "topology/topological_expansion.hpp"
-#include "topo_test_util.hpp"
 
 using namespace cmx::topology;
 using cmx::topology::test::flagged_submesh;
@@ -22,7 +22,8 @@ namespace {
 // Replays Alg. 2's steps in the paper's setting (every vertex unexpanded at first, boundary
 // included): the number of expanded vertices not satisfying Eq. (1) at their turn. Every
 // `ball_every` steps (0: never) the cluster mesh is checked to be a ball.
-std::size_t replay_in_paper_setting(const TetMesh& input, const ShellingExpansion& e, std::size_t ball_every) {
+std::size_t replay_in_paper_setting(const TetMesh& input, const ShellingExpansion& e,
+                                    std::size_t ball_every) {
   TetMesh m = input;
   std::vector<char> U(m.num_vertices(), 1);
   ClusterLinkWorkspace ws;
@@ -110,7 +111,8 @@ TEST_CASE("removability rule: neither a tet with four shared faces nor a tet pin
     int shared_at_diag = 0;
     const Tet& x = g.mesh.tet(t);
     for (int i = 0; i < 4; ++i)
-      if (x[i] != o && x[i] != d && adj.neighbor[t][i] != invalid_index && rem[adj.neighbor[t][i]]) ++shared_at_diag;
+      if (x[i] != o && x[i] != d && adj.neighbor[t][i] != invalid_index && rem[adj.neighbor[t][i]])
+        ++shared_at_diag;
     if (shared_at_diag == 2) {
       CHECK(!is_shelling_removable(g.mesh, adj, t, rem, count));
       ++blocked;
@@ -182,6 +184,12 @@ TEST_CASE("Furch: greedy shelling peels the unknotted-hole ball but not the knot
   CHECK(no.best_removed > 0);
   CHECK(no.best_removed < knot.mesh.num_tets());
   CHECK(no.message.find("no shelling found") != std::string::npos);
+  // The fallback says so and replays nothing.
+  const ShellingFallback none = shelling_fallback(knot.mesh, {2, 1, {}});
+  CHECK(!none.shelling_found);
+  CHECK(!none.replayed);
+  CHECK(none.best_removed == no.best_removed);
+  CHECK(none.message.find("may not be shellable") != std::string::npos);
   // Alg. 2 on the control: every expanded vertex satisfies Eq. (1) when its turn comes, and
   // the cluster mesh stays a ball (checked every 2000 steps).
   const ShellingExpansion e = shelling_to_expansion_sequence(control.mesh, ok.order);
@@ -250,7 +258,18 @@ TEST_CASE("Bing's house in a box: shellable, yet greedy index-order expansion me
   // The steps whose cone is empty while the split edge's ends sit at the shrink point.
   CHECK(f.empty_cone_edge_splits > 0);
   CHECK(f.empty_cone_edge_splits <= f.cluster_splits);
-  MESSAGE("fixed-boundary replay: " << f.expansions << " expansions, splits " << f.boundary_splits << " boundary, "
-                                    << f.free_splits << " free, " << f.cluster_splits << " of cluster simplices ("
-                                    << f.empty_cone_edge_splits << " cluster-edge splits with an empty cone)");
+  // Every interior vertex of the input is expanded once; the other expansions are split vertices.
+  CHECK(f.input_expansions == n - ball.boundary_vertices);
+  CHECK(f.expansions == f.input_expansions + f.cluster_splits);
+  // shelling_fallback chains the same three steps with its own search (8 attempts, seed 1).
+  const ShellingFallback chained = shelling_fallback(g.mesh);
+  CHECK(chained.shelling_found);
+  REQUIRE(chained.replayed);
+  CHECK(chained.replay.ok);
+  CHECK(chained.replay.input_expansions == f.input_expansions);
+  CHECK(chained.message.find("expands every interior vertex") != std::string::npos);
+  MESSAGE("fixed-boundary replay: " << f.expansions << " expansions, splits " << f.boundary_splits
+                                    << " boundary, " << f.free_splits << " free, " << f.cluster_splits
+                                    << " of cluster simplices (" << f.empty_cone_edge_splits
+                                    << " cluster-edge splits with an empty cone)");
 }
