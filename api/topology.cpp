@@ -6,6 +6,7 @@
 #include "topology/ball_check.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/fixed_boundary_replay.hpp"
 #include "topology/tet_mesh.hpp"
 #include "topology/topological_expansion.hpp"
 
@@ -93,6 +94,45 @@ TopologicalExpansion expand_topologically(std::span<const Tet> tets, std::size_t
   out.sequence = topology::indices_of(r.sequence);
   out.remaining = topology::indices_of(r.remaining);
   out.initially_simply_connected = initial.vertices == 0 || (initial.components == 1 && initial.euler == 1);
+  return out;
+}
+
+ShellingReplay replay_shelling(std::span<const Tet> tets, std::size_t vertex_count, std::uint64_t seed,
+                               std::size_t attempts) {
+  if (attempts == 0) throw Error("replay_shelling: attempts must be at least 1");
+  const topology::TetMesh mesh = ball_mesh("replay_shelling", tets, vertex_count);
+  topology::ShellingOptions options;
+  options.max_attempts = attempts;
+  options.seed = seed;
+  const topology::ShellingFallback f = topology::shelling_fallback(mesh, options);
+  ShellingReplay out;
+  out.shelling_found = f.shelling_found;
+  out.attempts = f.attempts;
+  out.best_removed = f.best_removed;
+  out.completed = f.replayed && f.replay.ok;
+  out.expansions = f.replay.expansions;
+  out.input_expansions = f.replay.input_expansions;
+  out.eq1_failures = f.replay.eq1_failures;
+  out.left = f.replay.left;
+  out.boundary_splits = f.replay.boundary_splits;
+  out.cluster_splits = f.replay.cluster_splits;
+  out.free_splits = f.replay.free_splits;
+  out.empty_cone_edge_splits = f.replay.empty_cone_edge_splits;
+  out.message = f.message;
+  for (std::size_t i = 0; i < f.steps.size(); ++i) {
+    const topology::ExpansionStep& st = f.steps[i];
+    ReplayStep step;
+    step.kind = st.kind == topology::ExpansionStepKind::edge_split   ? ReplayStep::Kind::edge_split
+                : st.kind == topology::ExpansionStepKind::face_split ? ReplayStep::Kind::face_split
+                                                                     : ReplayStep::Kind::vertex;
+    const int n = step.kind == ReplayStep::Kind::edge_split   ? 2
+                  : step.kind == ReplayStep::Kind::face_split ? 3
+                                                              : 0;
+    for (int k = 0; k < n; ++k) step.split[k] = static_cast<std::uint32_t>(st.split[k]);
+    step.vertex = static_cast<std::uint32_t>(st.vertex);
+    step.expanded = i < f.replay.step_expanded.size() && f.replay.step_expanded[i] != 0;
+    out.steps.push_back(step);
+  }
   return out;
 }
 

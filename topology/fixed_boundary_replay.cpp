@@ -36,7 +36,9 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
   const std::vector<char> boundary = boundary_vertex_flags(m);
   std::vector<char> unexpanded(m.num_vertices());
   for (std::size_t v = 0; v < unexpanded.size(); ++v) unexpanded[v] = boundary[v] ? 0 : 1;
+  std::size_t cluster_left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
   ClusterLinkWorkspace ws;
+  r.step_expanded.assign(sequence.steps.size(), 0);
   for (std::size_t i = 0; i < sequence.steps.size(); ++i) {
     const ExpansionStep& st = sequence.steps[i];
     bool edge_of_cluster = false;
@@ -62,19 +64,24 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
       else {
         ++r.cluster_splits;
         unexpanded[st.vertex] = 1;
+        ++cluster_left;
         edge_of_cluster = n == 2 && all_cluster;
       }
     }
     if (!unexpanded[st.vertex]) continue;
     ++r.expansions;
+    r.step_expanded[i] = 1;
     if (st.vertex < input.num_vertices()) ++r.input_expansions;
     if (edge_of_cluster && faces_mirrored_pair(m, st.vertex, unexpanded)) ++r.empty_cone_edge_splits;
-    if (!st.automatic && !is_topologically_expandable(m, st.vertex, unexpanded, ws)) {
+    // The last cluster vertex goes automatically (its Lk• is empty), as in topological_expansion.
+    // That is not always the paper's last step: boundary vertices of the last cells may follow.
+    if (cluster_left > 1 && !is_topologically_expandable(m, st.vertex, unexpanded, ws)) {
       if (r.eq1_failures++ == 0)
         r.first_failure =
             "step " + std::to_string(i) + ": vertex " + std::to_string(st.vertex) + " fails Eq. (1)";
     }
     unexpanded[st.vertex] = 0;
+    --cluster_left;
   }
   r.left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
   r.ok = r.eq1_failures == 0 && r.left == 0;
@@ -103,6 +110,7 @@ ShellingFallback shelling_fallback(const TetMesh& input, const ShellingOptions& 
   }
   f.replayed = true;
   f.replay = replay_with_fixed_boundary(input, sequence);
+  f.steps = sequence.steps;
   const std::string found = "a shelling of the " + tets + " tets found in " + std::to_string(f.attempts) +
                             (f.attempts == 1 ? " greedy attempt" : " greedy attempts");
   if (f.replay.ok)

@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "topology/shelling.hpp"
 #include "topology/tet_mesh.hpp"
@@ -39,6 +40,7 @@ struct FixedBoundaryReplay {
   std::size_t empty_cone_edge_splits = 0;  // cluster-edge splits facing the mirrored pair above
   std::size_t left = 0;                    // cluster vertices left at the end
   std::string first_failure;               // the first step that failed Eq. (1), when one did
+  std::vector<char> step_expanded;         // per step: 1 when it expanded a cluster vertex (0: skipped)
 };
 
 // Preconditions: `input` is the mesh `sequence` was computed from
@@ -56,9 +58,10 @@ struct ShellingFallback {
   std::size_t attempts = 0;      // greedy shelling attempts made
   std::size_t best_removed = 0;  // most tets one attempt removed (all of them when found)
   bool stopped_at_deadline = false;
-  bool replayed = false;       // a sequence was converted and replayed
-  FixedBoundaryReplay replay;  // meaningful when `replayed`
-  std::string message;         // one sentence: what was found and how the replay ended
+  bool replayed = false;             // a sequence was converted and replayed
+  FixedBoundaryReplay replay;        // meaningful when `replayed`
+  std::vector<ExpansionStep> steps;  // Alg. 2's sequence when `replayed` (replay.step_expanded: which ran)
+  std::string message;               // one sentence: what was found and how the replay ended
 };
 
 // Precondition: check_ball(input).ok. O(attempts * T log T) plus the replay.

@@ -83,4 +83,46 @@ TopologicalExpansion expand_topologically(std::span<const Tet> tets, std::size_t
                                           std::span<const std::uint32_t> cluster_vertices = {},
                                           std::string_view order = "priority");
 
+// One step of the expansion sequence that Alg. 2 (paper Sec. 4.3) makes from a shelling: split
+// `split` (an edge: two ids, a face: three; kind vertex: none) making `vertex`, then expand it.
+struct ReplayStep {
+  enum class Kind : std::uint8_t { vertex, edge_split, face_split };
+  Kind kind = Kind::vertex;
+  std::array<std::uint32_t, 3> split{UINT32_MAX, UINT32_MAX, UINT32_MAX};  // unused ids: UINT32_MAX
+  std::uint32_t vertex = UINT32_MAX;  // split vertices get ids vertex_count, vertex_count + 1, ... in order
+  bool expanded = false;              // false: it was expanded already (boundary or free split): skipped
+};
+
+// The outcome of replay_shelling.
+struct ShellingReplay {
+  bool shelling_found = false;
+  std::size_t attempts = 0;          // greedy shelling attempts made
+  std::size_t best_removed = 0;      // most tets one attempt removed (every tet when found)
+  bool completed = false;            // a shelling was replayed and every interior vertex was expanded
+  std::size_t expansions = 0;        // cluster vertices the replay expanded
+  std::size_t input_expansions = 0;  // of those, vertices of the input (the others are split vertices)
+  std::size_t eq1_failures = 0;      // expansions that did not satisfy Eq. (1) at their turn
+  std::size_t left = 0;              // cluster vertices never expanded
+  std::size_t boundary_splits = 0;   // splits of boundary simplices (boundary vertices: not expanded)
+  std::size_t cluster_splits = 0;    // splits of simplices with a cluster vertex (expanded in turn)
+  std::size_t free_splits = 0;       // splits of interior simplices of expanded vertices (not expanded)
+  // Expansions of a vertex splitting a cluster edge (x, y) with a tet (x, y, s, t), s and t
+  // expanded, around it: their geometric cone is empty while x and y sit at the shrink point,
+  // which is why cmx::map_to_domain does not replay shellings (docs/algorithm/expansion.md).
+  std::size_t empty_cone_edge_splits = 0;
+  std::string message;            // one sentence: the search's and the replay's verdict
+  std::vector<ReplayStep> steps;  // the sequence, when a shelling was found
+};
+
+// The shelling fallback of paper Sec. 4.3, topology only, in cmx's setting: looks for a shelling
+// of the ball (at most `attempts` greedy attempts, seeded by `seed`; not finding one proves
+// nothing), converts it by Alg. 2 and replays it from the start with the boundary vertices
+// expanded and the interior ones in the cluster mesh, checking Eq. (1) at every expansion. This is
+// what `cmx topo-expand` runs when its greedy expansion is stuck.
+// Errors: throws cmx::Error when the tets are not a ball, an index is >= vertex_count, or
+// attempts is 0. Not finding a shelling is a result (shelling_found = false), not an error.
+// Time: O(attempts * T log T) for bounded valence, plus the replay.
+ShellingReplay replay_shelling(std::span<const Tet> tets, std::size_t vertex_count, std::uint64_t seed = 1,
+                               std::size_t attempts = 8);
+
 }  // namespace cmx

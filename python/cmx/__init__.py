@@ -24,7 +24,7 @@ from ._cmx import (Cancelled, Error, InvalidInput, InvalidOptions, PrecisionLost
                    TimeLimit)
 from ._map import Result, map, boundary_vertices, boundary_for_shape
 from ._kernel_lp import orient3d, orient2d, ChebyshevCenter, chebyshev_center, chebyshev_centre
-from ._topology import BallCheck, is_ball, boundary_faces, is_expandable, expand_topologically
+from ._topology import BallCheck, is_ball, boundary_faces, is_expandable, expand_topologically, replay_shelling
 from ._io import Mesh, read, write
 
 __version__ = _cmx.__version__
@@ -32,6 +32,6 @@ __version__ = _cmx.__version__
 __all__ = [
     "map", "Result", "Progress", "boundary_vertices", "boundary_for_shape", "orient3d", "orient2d",
     "chebyshev_center", "chebyshev_centre", "ChebyshevCenter", "is_ball", "BallCheck", "boundary_faces",
-    "is_expandable", "expand_topologically", "read", "write", "Mesh", "Error", "InvalidInput",
+    "is_expandable", "expand_topologically", "replay_shelling", "read", "write", "Mesh", "Error", "InvalidInput",
     "InvalidOptions", "TimeLimit", "Cancelled", "Stuck", "PrecisionLost", "__version__",
 ]

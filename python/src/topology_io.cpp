@@ -1,4 +1,5 @@
-// cmx._cmx: is_ball, boundary_faces, is_expandable, expand_topologically (cmx/topology.hpp) and
+// cmx._cmx: is_ball, boundary_faces, is_expandable, expand_topologically, replay_shelling
+// (cmx/topology.hpp) and
 // read / write (cmx/io.hpp).
 #include <string>
 
@@ -37,12 +38,14 @@ void bind_topology(py::module_& m) {
   m.def(
       "is_expandable",
       [](const IndexArray& tets, std::size_t vertex_count, const IndexArray& cluster, std::uint32_t vertex) {
-        return is_expandable(tets_of(tets, "T"), vertex_count, indices_of(cluster, "cluster_vertices"), vertex);
+        return is_expandable(tets_of(tets, "T"), vertex_count, indices_of(cluster, "cluster_vertices"),
+                             vertex);
       },
       py::arg("T"), py::arg("vertex_count"), py::arg("cluster_vertices"), py::arg("vertex"));
   m.def(
       "expand_topologically",
-      [](const IndexArray& tets, std::size_t vertex_count, const IndexArray& cluster, const std::string& order) {
+      [](const IndexArray& tets, std::size_t vertex_count, const IndexArray& cluster,
+         const std::string& order) {
         const std::vector<Tet> t = tets_of(tets, "T");
         const std::vector<std::uint32_t> c = indices_of(cluster, "cluster_vertices");
         TopologicalExpansion x;
@@ -58,6 +61,49 @@ void bind_topology(py::module_& m) {
         return d;
       },
       py::arg("T"), py::arg("vertex_count"), py::arg("cluster_vertices"), py::arg("order"));
+  m.def(
+      "replay_shelling",
+      [](const IndexArray& tets, std::size_t vertex_count, std::uint64_t seed, std::size_t attempts) {
+        const std::vector<Tet> t = tets_of(tets, "T");
+        ShellingReplay x;
+        {
+          py::gil_scoped_release release;
+          x = replay_shelling(t, vertex_count, seed, attempts);
+        }
+        const auto n = static_cast<py::ssize_t>(x.steps.size());
+        py::array_t<std::uint8_t> kind(n);
+        py::array_t<std::int64_t> split({n, py::ssize_t{3}});
+        py::array_t<std::uint32_t> vertex(n);
+        py::array_t<bool> expanded(n);
+        for (py::ssize_t i = 0; i < n; ++i) {
+          const ReplayStep& st = x.steps[static_cast<std::size_t>(i)];
+          kind.mutable_at(i) = static_cast<std::uint8_t>(st.kind);
+          for (py::ssize_t k = 0; k < 3; ++k)
+            split.mutable_at(i, k) = st.split[k] == UINT32_MAX ? -1 : std::int64_t{st.split[k]};
+          vertex.mutable_at(i) = st.vertex;
+          expanded.mutable_at(i) = st.expanded;
+        }
+        py::dict d;
+        d["shelling_found"] = x.shelling_found;
+        d["attempts"] = x.attempts;
+        d["best_removed"] = x.best_removed;
+        d["completed"] = x.completed;
+        d["expansions"] = x.expansions;
+        d["input_expansions"] = x.input_expansions;
+        d["eq1_failures"] = x.eq1_failures;
+        d["left"] = x.left;
+        d["boundary_splits"] = x.boundary_splits;
+        d["cluster_splits"] = x.cluster_splits;
+        d["free_splits"] = x.free_splits;
+        d["empty_cone_edge_splits"] = x.empty_cone_edge_splits;
+        d["message"] = x.message;
+        d["step_kind"] = kind;
+        d["step_split"] = split;
+        d["step_vertex"] = vertex;
+        d["step_expanded"] = expanded;
+        return d;
+      },
+      py::arg("T"), py::arg("vertex_count"), py::arg("seed"), py::arg("attempts"));
 }
 
 void bind_io(py::module_& m) {

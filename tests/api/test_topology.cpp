@@ -174,3 +174,50 @@ TEST_CASE("api expand_topologically: Bing's house and Furch's knotted hole get s
   const auto control = cmx::topology::unknotted_hole_ball();
   CHECK(cmx::expand_topologically(tets_of(control.mesh), control.mesh.num_vertices()).complete);
 }
+
+TEST_CASE("api replay_shelling: the house box replays completely, the knotted hole has no shelling found") {
+  const auto box = cmx::topology::bings_house_in_box();
+  const std::vector<cmx::Tet> tets = tets_of(box.mesh);
+  const std::size_t n = box.mesh.num_vertices();
+  // Greedy expansion in index order is stuck on the house; the fallback is not.
+  CHECK_FALSE(cmx::expand_topologically(tets, n, {}, "index").complete);
+  const cmx::ShellingReplay r = cmx::replay_shelling(tets, n);
+  CHECK(r.shelling_found);
+  CHECK_MESSAGE(r.completed, r.message);
+  CHECK(r.eq1_failures == 0);
+  CHECK(r.left == 0);
+  CHECK(r.best_removed == tets.size());
+  // The sequence: split vertices numbered in step order from n on; the expanded steps are the
+  // reported expansions; every input vertex appears once as a plain step or is a boundary vertex.
+  std::size_t expanded = 0, splits = 0;
+  std::uint32_t next = static_cast<std::uint32_t>(n);
+  for (const cmx::ReplayStep& s : r.steps) {
+    expanded += s.expanded ? 1 : 0;
+    if (s.kind == cmx::ReplayStep::Kind::vertex) {
+      CHECK(s.vertex < n);
+      CHECK(s.split[0] == UINT32_MAX);
+    } else {
+      ++splits;
+      CHECK(s.vertex == next++);
+      CHECK(s.split[1] != UINT32_MAX);
+      CHECK((s.split[2] == UINT32_MAX) == (s.kind == cmx::ReplayStep::Kind::edge_split));
+    }
+  }
+  CHECK(expanded == r.expansions);
+  CHECK(splits == r.boundary_splits + r.cluster_splits + r.free_splits);
+  CHECK(r.expansions == r.input_expansions + r.cluster_splits);
+  CHECK(r.empty_cone_edge_splits > 0);
+
+  const auto knot = cmx::topology::knotted_hole_ball();
+  const cmx::ShellingReplay k = cmx::replay_shelling(tets_of(knot.mesh), knot.mesh.num_vertices(), 1, 2);
+  CHECK_FALSE(k.shelling_found);
+  CHECK_FALSE(k.completed);
+  CHECK(k.attempts == 2);
+  CHECK(k.steps.empty());
+  CHECK(k.message.find("may not be shellable") != std::string::npos);
+
+  CHECK(error_of([&] { (void)cmx::replay_shelling(tets, n, 1, 0); }).find("attempts") != std::string::npos);
+  std::vector<cmx::Tet> twice = tets;
+  twice.push_back(tets.front());
+  CHECK(error_of([&] { (void)cmx::replay_shelling(twice, n); }).find("not a ball") != std::string::npos);
+}

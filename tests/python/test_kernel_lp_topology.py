@@ -83,3 +83,64 @@ def test_topological_expansion():
     assert cmx.is_expandable(T, interior, interior[0]) in (True, False)
     with pytest.raises(cmx.Error):
         cmx.expand_topologically(T, order="sideways")
+
+
+def _split(T, simplex, m):
+    """The tets after splitting an edge or face `simplex` at new vertex m: each tet containing it
+    becomes one tet per vertex of the simplex, that vertex replaced by m (orientation kept)."""
+    out = []
+    for t in T:
+        if all(v in t for v in simplex):
+            for v in simplex:
+                out.append([m if w == v else w for w in t])
+        else:
+            out.append(list(t))
+    return out
+
+
+def test_replay_shelling_replays_alg2_checked_independently():
+    V, T = grid_ball(3)
+    r = cmx.replay_shelling(T)
+    assert r["shelling_found"] and r["completed"], r["message"]
+    interior = set(range(len(V))) - set(cmx.boundary_vertices(T).tolist())
+    assert r["input_expansions"] == len(interior)
+    assert r["expansions"] == int(r["step_expanded"].sum())
+    assert r["expansions"] == r["input_expansions"] + r["cluster_splits"]
+    assert r["eq1_failures"] == 0 and r["left"] == 0
+    # Replay the steps here, with the API's own Eq. (1) test and ball check: the cluster is the
+    # interior at first; a split vertex joins it when its simplex is interior and has a cluster
+    # vertex (a boundary split makes a boundary vertex, an all-expanded one a free split).
+    tets = [list(map(int, t)) for t in T]
+    n = len(V)
+    cluster = set(interior)
+    for i, (kind, split, v, expanded) in enumerate(zip(r["step_kind"].tolist(), r["step_split"].tolist(),
+                                                        r["step_vertex"].tolist(), r["step_expanded"].tolist())):
+        if kind != 0:
+            simplex = [s for s in split if s >= 0]
+            assert len(simplex) == kind + 1 and v == n
+            faces = [set(f) for f in cmx.boundary_faces(tets, n).tolist()]
+            on_boundary = any(set(simplex) <= f for f in faces)
+            tets = _split(tets, simplex, v)
+            n += 1
+            if not on_boundary and any(s in cluster for s in simplex):
+                cluster.add(v)
+        assert expanded == (v in cluster), i
+        if not expanded:
+            continue
+        if len(cluster) > 1:  # the last one goes automatically
+            assert cmx.is_expandable(tets, sorted(cluster), v, vertex_count=n), i
+        cluster.remove(v)
+    assert not cluster
+    assert cmx.is_ball(tets, n)
+    assert n == len(V) + r["boundary_splits"] + r["cluster_splits"] + r["free_splits"]
+
+
+def test_replay_shelling_errors():
+    V, T = grid_ball(2)
+    for bad in (0, -1, 1.5, True):
+        with pytest.raises(cmx.InvalidOptions):
+            cmx.replay_shelling(T, attempts=bad)
+    with pytest.raises(cmx.InvalidOptions):
+        cmx.replay_shelling(T, seed=-3)
+    with pytest.raises(cmx.Error, match="not a ball"):
+        cmx.replay_shelling(np.vstack([T, T[:1]]))  # a repeated tet
