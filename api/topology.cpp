@@ -119,17 +119,22 @@ ShellingReplay replay_shelling(std::span<const Tet> tets, std::size_t vertex_cou
   out.free_splits = f.replay.free_splits;
   out.empty_cone_edge_splits = f.replay.empty_cone_edge_splits;
   out.message = f.message;
+  for (const topology::ChordSplit& c : f.chords) {
+    ReplayStep step;
+    step.kind = c.simplex[2] == topology::invalid_vertex ? ReplayStep::Kind::edge_split
+                                                         : ReplayStep::Kind::face_split;
+    step.split = topology::indices_of(c.simplex);
+    step.vertex = c.vertex;
+    out.chords.push_back(step);
+  }
   for (std::size_t i = 0; i < f.steps.size(); ++i) {
     const topology::ExpansionStep& st = f.steps[i];
     ReplayStep step;
     step.kind = st.kind == topology::ExpansionStepKind::edge_split   ? ReplayStep::Kind::edge_split
                 : st.kind == topology::ExpansionStepKind::face_split ? ReplayStep::Kind::face_split
                                                                      : ReplayStep::Kind::vertex;
-    const int n = step.kind == ReplayStep::Kind::edge_split   ? 2
-                  : step.kind == ReplayStep::Kind::face_split ? 3
-                                                              : 0;
-    for (int k = 0; k < n; ++k) step.split[k] = static_cast<std::uint32_t>(st.split[k]);
-    step.vertex = static_cast<std::uint32_t>(st.vertex);
+    step.split = topology::indices_of(st.split);
+    step.vertex = st.vertex;
     step.expanded = i < f.replay.step_expanded.size() && f.replay.step_expanded[i] != 0;
     out.steps.push_back(step);
   }

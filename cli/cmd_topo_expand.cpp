@@ -50,9 +50,10 @@ const HelpText help = {
     "greedily by Eq. (1) alone (no geometry) and reports the sequence length, the expansions by\n"
     "kind (k-manifold k = 1, 2, 3, other Eq. (1), automatic), whether it got stuck, and when stuck\n"
     "the remaining cluster mesh (vertices, Euler characteristic, connected components). When it is\n"
-    "stuck, the fallback of paper Sec. 4.3 looks for a shelling of the mesh (8 greedy attempts) and\n"
-    "replays it as an expansion sequence (Alg. 2) from the start, with the boundary in place,\n"
-    "checking Eq. (1) at every step; it reports whether the replay expands every interior vertex.\n",
+    "stuck, the fallback of paper Sec. 4.3 splits every chord (an interior edge or face with all its\n"
+    "vertices on the boundary), looks for a shelling (8 greedy attempts) and replays it as an\n"
+    "expansion sequence (Alg. 2) from the start, with the boundary in place, checking Eq. (1) at\n"
+    "every step; it reports whether the replay expands every interior vertex.\n",
     "Exit status: 0 when the expansion ran, stuck or not (stuck is a result, not an error);\n"
     "2 bad command line; 3 unreadable or malformed MESH; 4 MESH is not a ball.\n"};
 
@@ -114,17 +115,19 @@ void print_fallback_json(const std::optional<topology::ShellingFallback>& f) {
   }
   const topology::FixedBoundaryReplay& r = f->replay;
   std::printf(
-      " \"fallback\": {\"shelling_found\": %s, \"attempts\": %zu, \"best_removed\": %zu, \"replayed\": %s,\n"
+      " \"fallback\": {\"chord_splits\": %zu, \"shelling_found\": %s, \"attempts\": %zu, \"best_removed\": "
+      "%zu, "
+      "\"tets\": %zu, \"replayed\": %s,\n"
       "  \"completed\": %s, \"expansions\": %zu, \"input_expansions\": %zu, \"eq1_failures\": %zu, "
       "\"left\": %zu,\n"
       "  \"boundary_splits\": %zu, \"cluster_splits\": %zu, \"free_splits\": %zu, "
       "\"empty_cone_edge_splits\": "
       "%zu,\n"
       "  \"message\": %s},\n",
-      f->shelling_found ? "true" : "false", f->attempts, f->best_removed, f->replayed ? "true" : "false",
-      f->replayed && r.ok ? "true" : "false", r.expansions, r.input_expansions, r.eq1_failures, r.left,
-      r.boundary_splits, r.cluster_splits, r.free_splits, r.empty_cone_edge_splits,
-      json_quote(f->message).c_str());
+      f->chords.size(), f->shelling_found ? "true" : "false", f->attempts, f->best_removed, f->tets,
+      f->replayed ? "true" : "false", f->replayed && r.ok ? "true" : "false", r.expansions,
+      r.input_expansions, r.eq1_failures, r.left, r.boundary_splits, r.cluster_splits, r.free_splits,
+      r.empty_cone_edge_splits, json_quote(f->message).c_str());
 }
 
 void print_fallback_text(const std::optional<topology::ShellingFallback>& f, double seconds) {

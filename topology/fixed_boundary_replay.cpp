@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "topology/chords.hpp"
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
@@ -88,17 +89,33 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
   return r;
 }
 
-ShellingFallback shelling_fallback(const TetMesh& input, const ShellingOptions& options) {
+ShellingFallback shelling_fallback(const TetMesh& mesh, const ShellingOptions& options) {
   ShellingFallback f;
+  TetMesh input = mesh;
+  std::vector<char> boundary = boundary_vertex_flags(input);
+  std::vector<char> interior = interior_vertex_flags(input);
+  ChordContext context{input, boundary, interior, [&](VertexId a, VertexId b, VertexId c) {
+                         const SplitResult r =
+                             c == invalid_index ? split_edge(input, a, b) : split_face(input, a, b, c);
+                         boundary.push_back(0);
+                         interior.push_back(1);
+                         f.chords.push_back({{a, b, c}, r.new_vertex});
+                         return r.new_vertex;
+                       }};
+  split_all_chords(context);
   const ShellingResult shelling = find_shelling(input, options);
   f.shelling_found = shelling.found;
   f.attempts = shelling.attempts;
   f.best_removed = shelling.best_removed;
   f.stopped_at_deadline = shelling.stopped_at_deadline;
-  const std::string tets = std::to_string(input.num_tets());
+  f.tets = input.num_tets();
+  const std::string tets = std::to_string(f.tets);
+  const std::string chords =
+      f.chords.empty() ? "" : " (after " + std::to_string(f.chords.size()) + " chord splits)";
   if (!shelling.found) {
     f.message = "no shelling found in " + std::to_string(f.attempts) + " greedy attempts (at most " +
                 std::to_string(f.best_removed) + " of " + tets + " tets peeled" +
+                (f.chords.empty() ? "" : ", after " + std::to_string(f.chords.size()) + " chord splits") +
                 (f.stopped_at_deadline ? ", cut short" : "") + "): the input may not be shellable";
     return f;
   }
@@ -111,7 +128,8 @@ ShellingFallback shelling_fallback(const TetMesh& input, const ShellingOptions& 
   f.replayed = true;
   f.replay = replay_with_fixed_boundary(input, sequence);
   f.steps = sequence.steps;
-  const std::string found = "a shelling of the " + tets + " tets found in " + std::to_string(f.attempts) +
+  const std::string found = "a shelling of the " + tets + " tets" + chords + " found in " +
+                            std::to_string(f.attempts) +
                             (f.attempts == 1 ? " greedy attempt" : " greedy attempts");
   if (f.replay.ok)
     f.message =

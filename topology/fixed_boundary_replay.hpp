@@ -20,6 +20,7 @@
 // (x, m, s, t): while x and y sit at the shrink point these two ask m for opposite signs, so its
 // cone is empty (docs/algorithm/expansion.md, "Replaying Alg. 2 with the boundary in place").
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -49,14 +50,31 @@ struct FixedBoundaryReplay {
 [[nodiscard]] FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input,
                                                              const ShellingExpansion& sequence);
 
-// The fallback of paper Sec. 4.3 for a run without geometry (cmx topo-expand): look for a
-// shelling of `input` (find_shelling, bounded by `options`) and, when one is found, convert it by
-// Alg. 2 and replay it from the start with the boundary in place. The replay does not continue
-// the greedy run that got stuck: as in the paper, the sequence is planned for the whole input.
+// The fallback of paper Sec. 4.3 for a run without geometry (cmx topo-expand): split every
+// chord of `input`, look for a shelling of the result (find_shelling, bounded by `options`) and,
+// when one is found, convert it by Alg. 2 and replay it from the start with the boundary in
+// place. The replay does not continue the greedy run that got stuck: as in the paper, the
+// sequence is planned for the whole input.
+//
+// Why every chord first (topology/chords.hpp: interior simplices whose vertices all lie on the
+// boundary): with the boundary expanded, the cluster mesh is homotopy equivalent to the remaining
+// ball R minus its simplices spanned by boundary vertices. Without chords those all lie on the
+// boundary of R, and a ball minus closed parts of its boundary stays contractible, so no step can
+// leave a hole; a boundary split makes no chord either (its new edges to a boundary vertex lie in a
+// boundary face). With chords, a chord inside R is a hole, and Eq. (1) fails: on the unknotted
+// control ball 2 of 3 greedy shellings fail Eq. (1) at some step before its 316 chords are split,
+// none after (tests/topology/test_shelling.cpp).
+struct ChordSplit {
+  std::array<VertexId, 3> simplex{invalid_vertex, invalid_vertex, invalid_vertex};  // edge: 2 ids
+  VertexId vertex = invalid_vertex;  // the new interior vertex (a cluster vertex, expanded by a later step)
+};
+
 struct ShellingFallback {
+  std::vector<ChordSplit> chords;  // the chord splits, in order, before the shelling
   bool shelling_found = false;
   std::size_t attempts = 0;      // greedy shelling attempts made
   std::size_t best_removed = 0;  // most tets one attempt removed (all of them when found)
+  std::size_t tets = 0;          // tets of the mesh shelled (the input after the chord splits)
   bool stopped_at_deadline = false;
   bool replayed = false;             // a sequence was converted and replayed
   FixedBoundaryReplay replay;        // meaningful when `replayed`

@@ -1,6 +1,6 @@
 #include "algorithm/refinement/shelling_fallback.hpp"
 
-#include "topology/shelling.hpp"
+#include "topology/fixed_boundary_replay.hpp"
 
 namespace cmx::algorithm {
 
@@ -11,21 +11,34 @@ ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, st
   options.max_attempts = max_attempts;
   options.seed = seed;
   if (control) options.should_stop = [control] { return control->should_stop("shelling search"); };
-  const topology::ShellingResult r = topology::find_shelling(input, options);
+  const topology::ShellingFallback f = topology::shelling_fallback(input, options);
   ShellingVerdict v;
-  v.found = r.found;
-  v.attempts = r.attempts;
-  v.best_removed = r.best_removed;  // all tets when found
-  v.tets = tets.size();
-  if (r.found)
+  v.found = f.shelling_found;
+  v.attempts = f.attempts;
+  v.best_removed = f.best_removed;  // all tets when found
+  v.tets = f.tets;                  // after the chord splits
+  v.replay_completed = f.replayed && f.replay.ok;
+  v.replay_expansions = f.replay.expansions;
+  v.replay_empty_cone_steps = f.replay.empty_cone_edge_splits;
+  const std::string shellable =
+      "the input is shellable (a shelling of its " + std::to_string(v.tets) + " tets" +
+      (f.chords.empty() ? "" : ", after " + std::to_string(f.chords.size()) + " chord splits,") +
+      " was found)";
+  if (v.replay_completed)
     v.message =
-        "the input is shellable (a shelling of its " + std::to_string(v.tets) +
-        " tets was found), but replaying a shelling as an expansion sequence (paper Alg. 2) is not built";
+        shellable + " and Alg. 2 replays it topologically with the boundary in place (" +
+        std::to_string(v.replay_expansions) + " expansions, each satisfying Eq. (1)), but " +
+        std::to_string(v.replay_empty_cone_steps) +
+        " of them split a cluster edge whose cone is empty while its ends sit at the shrink point, so "
+        "replaying it geometrically is not built (docs/algorithm/expansion.md)";
+  else if (v.found)
+    v.message = shellable + ", but Alg. 2's topological replay of it fails (" + f.message +
+                "), and replaying it geometrically is not built";
   else
-    v.message = "no shelling of the input found in " + std::to_string(r.attempts) +
-                " greedy attempts (at most " + std::to_string(r.best_removed) + " of " +
+    v.message = "no shelling of the input found in " + std::to_string(f.attempts) +
+                " greedy attempts (at most " + std::to_string(f.best_removed) + " of " +
                 std::to_string(v.tets) + " tets peeled" +
-                (r.stopped_at_deadline ? ", cut short by the time limit" : "") +
+                (f.stopped_at_deadline ? ", cut short by the time limit" : "") +
                 "), and the fallback of paper Sec. 4.3 needs one: the input may not be shellable";
   return v;
 }

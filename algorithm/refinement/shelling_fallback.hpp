@@ -9,8 +9,9 @@
 // a full box is shellable and meets its NOBUENOSS in topological index order, but no geometric
 // run reaches it. Replaying a shelling geometrically is not built: docs/algorithm/expansion.md
 // records why the paper's Alg. 2 does not keep the method's invariants as stated (its topological
-// half does hold with the boundary in place: topology/fixed_boundary_replay.hpp, which
-// `cmx topo-expand` runs when stuck), and the attempts made. So a NOBUENOSS always ends as `stuck`;
+// half does hold with the boundary in place once every chord is split: this stage replays it,
+// topology/fixed_boundary_replay.hpp, as `cmx topo-expand` does when stuck), and the attempts
+// made. So a NOBUENOSS always ends as `stuck`;
 // this stage says whether the input is known to be shellable, which is what a user can act on
 // (a non-shellable input needs remeshing, a shellable one is a case for the missing replay).
 #include <cstddef>
@@ -27,12 +28,19 @@ struct ShellingVerdict {
   bool found = false;
   std::size_t attempts = 0;
   std::size_t best_removed = 0;  // most tets one greedy attempt removed
-  std::size_t tets = 0;
-  std::string message;  // one sentence for the stuck message
+  std::size_t tets = 0;  // of the mesh searched: the input after splitting every chord
+  // When found: Alg. 2's topological replay of it with the boundary in place
+  // (topology/fixed_boundary_replay.hpp), which is what `cmx topo-expand` reports.
+  bool replay_completed = false;  // every interior vertex expanded, each satisfying Eq. (1)
+  std::size_t replay_expansions = 0;
+  std::size_t replay_empty_cone_steps = 0;  // of those, split cluster edges with an empty geometric cone
+  std::string message;                      // one sentence for the stuck message
 };
 
 // At most `max_attempts` greedy attempts with seeds derived from `seed`; none but the first
-// starts once `control` (when given) says stop. O(attempts * T log T).
+// starts once `control` (when given) says stop. When a shelling is found it is converted by
+// Alg. 2 and replayed topologically, and the message says why that replay is not run
+// geometrically. O(attempts * T log T) plus the replay.
 ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, std::size_t num_vertices,
                                       std::uint64_t seed, RunControl* control, std::size_t max_attempts = 8);
 

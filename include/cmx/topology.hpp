@@ -110,13 +110,18 @@ struct ShellingReplay {
   // expanded, around it: their geometric cone is empty while x and y sit at the shrink point,
   // which is why cmx::map_to_domain does not replay shellings (docs/algorithm/expansion.md).
   std::size_t empty_cone_edge_splits = 0;
-  std::string message;            // one sentence: the search's and the replay's verdict
-  std::vector<ReplayStep> steps;  // the sequence, when a shelling was found
+  std::string message;  // one sentence: the search's and the replay's verdict
+  // The chord splits made first (interior edges and faces whose vertices all lie on the boundary;
+  // with the boundary in place a chord leaves a hole in the cluster mesh and Eq. (1) can fail):
+  // their vertices are interior, numbered from vertex_count on, and expanded by later steps.
+  std::vector<ReplayStep> chords;
+  std::vector<ReplayStep>
+      steps;  // the sequence, when a shelling was found; its split vertices follow the chords'
 };
 
-// The shelling fallback of paper Sec. 4.3, topology only, in cmx's setting: looks for a shelling
-// of the ball (at most `attempts` greedy attempts, seeded by `seed`; not finding one proves
-// nothing), converts it by Alg. 2 and replays it from the start with the boundary vertices
+// The shelling fallback of paper Sec. 4.3, topology only, in cmx's setting: splits every chord,
+// looks for a shelling of the ball (at most `attempts` greedy attempts, seeded by `seed`; not
+// finding one proves nothing), converts it by Alg. 2 and replays it from the start with the boundary vertices
 // expanded and the interior ones in the cluster mesh, checking Eq. (1) at every expansion. This is
 // what `cmx topo-expand` runs when its greedy expansion is stuck.
 // Errors: throws cmx::Error when the tets are not a ball, an index is >= vertex_count, or

@@ -57,13 +57,16 @@ def expand_topologically(T: Any, cluster_vertices: Any = (), order: str = "prior
 
 def replay_shelling(T: Any, seed: int = 1, attempts: int = 8, vertex_count: Optional[int] = None) -> dict:
     """The shelling fallback of paper Sec. 4.3, topology only (what `cmx topo-expand` runs when
-    stuck): look for a shelling of the ball (at most `attempts` greedy attempts), convert it by
-    Alg. 2 and replay it from the start with the boundary in place, checking Eq. (1) at every
-    expansion. A dict with shelling_found, attempts, best_removed, completed, expansions,
-    input_expansions, eq1_failures, left, boundary_splits, cluster_splits, free_splits,
-    empty_cone_edge_splits, message, and the sequence as arrays: step_kind (0 vertex, 1 edge
-    split, 2 face split), step_split ((n, 3), -1 where unused), step_vertex (split vertices
-    numbered from vertex_count on) and step_expanded (False: already expanded, skipped)."""
+    stuck): split every chord (interior edge or face whose vertices all lie on the boundary), look
+    for a shelling of the ball (at most `attempts` greedy attempts), convert it by Alg. 2 and
+    replay it from the start with the boundary in place, checking Eq. (1) at every expansion. A
+    dict with shelling_found, attempts, best_removed, completed, expansions, input_expansions,
+    eq1_failures, left, boundary_splits, cluster_splits, free_splits, empty_cone_edge_splits,
+    message; the chord splits as arrays chord_kind (1 edge, 2 face), chord_split ((c, 3), -1
+    where unused) and chord_vertex (new interior vertices numbered from vertex_count on); and the
+    sequence as arrays step_kind (0 vertex, 1 edge split, 2 face split), step_split, step_vertex
+    (split vertices numbered after the chords') and step_expanded (False: already expanded,
+    skipped)."""
     for name, value, least in (("attempts", attempts, 1), ("seed", seed, 0)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < least \
                 or value >= 2**64:

@@ -11,6 +11,28 @@ namespace cmx::python {
 
 namespace {
 
+// Steps as parallel arrays PREFIX_kind (0 vertex, 1 edge split, 2 face split), PREFIX_split
+// ((n, 3), -1 where unused), PREFIX_vertex and PREFIX_expanded.
+void add_replay_steps(py::dict& d, const std::string& prefix, const std::vector<ReplayStep>& steps) {
+  const auto n = static_cast<py::ssize_t>(steps.size());
+  py::array_t<std::uint8_t> kind(n);
+  py::array_t<std::int64_t> split({n, py::ssize_t{3}});
+  py::array_t<std::uint32_t> vertex(n);
+  py::array_t<bool> expanded(n);
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const ReplayStep& st = steps[static_cast<std::size_t>(i)];
+    kind.mutable_at(i) = static_cast<std::uint8_t>(st.kind);
+    for (py::ssize_t k = 0; k < 3; ++k)
+      split.mutable_at(i, k) = st.split[k] == UINT32_MAX ? -1 : std::int64_t{st.split[k]};
+    vertex.mutable_at(i) = st.vertex;
+    expanded.mutable_at(i) = st.expanded;
+  }
+  d[(prefix + "_kind").c_str()] = kind;
+  d[(prefix + "_split").c_str()] = split;
+  d[(prefix + "_vertex").c_str()] = vertex;
+  d[(prefix + "_expanded").c_str()] = expanded;
+}
+
 void bind_topology(py::module_& m) {
   m.def(
       "is_ball",
@@ -70,19 +92,6 @@ void bind_topology(py::module_& m) {
           py::gil_scoped_release release;
           x = replay_shelling(t, vertex_count, seed, attempts);
         }
-        const auto n = static_cast<py::ssize_t>(x.steps.size());
-        py::array_t<std::uint8_t> kind(n);
-        py::array_t<std::int64_t> split({n, py::ssize_t{3}});
-        py::array_t<std::uint32_t> vertex(n);
-        py::array_t<bool> expanded(n);
-        for (py::ssize_t i = 0; i < n; ++i) {
-          const ReplayStep& st = x.steps[static_cast<std::size_t>(i)];
-          kind.mutable_at(i) = static_cast<std::uint8_t>(st.kind);
-          for (py::ssize_t k = 0; k < 3; ++k)
-            split.mutable_at(i, k) = st.split[k] == UINT32_MAX ? -1 : std::int64_t{st.split[k]};
-          vertex.mutable_at(i) = st.vertex;
-          expanded.mutable_at(i) = st.expanded;
-        }
         py::dict d;
         d["shelling_found"] = x.shelling_found;
         d["attempts"] = x.attempts;
@@ -97,10 +106,8 @@ void bind_topology(py::module_& m) {
         d["free_splits"] = x.free_splits;
         d["empty_cone_edge_splits"] = x.empty_cone_edge_splits;
         d["message"] = x.message;
-        d["step_kind"] = kind;
-        d["step_split"] = split;
-        d["step_vertex"] = vertex;
-        d["step_expanded"] = expanded;
+        add_replay_steps(d, "chord", x.chords);
+        add_replay_steps(d, "step", x.steps);
         return d;
       },
       py::arg("T"), py::arg("vertex_count"), py::arg("seed"), py::arg("attempts"));

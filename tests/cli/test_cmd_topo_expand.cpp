@@ -201,6 +201,8 @@ TEST_CASE(
   CHECK(json_has(box, "\"completed\": true"));
   CHECK(json_integer(box, "eq1_failures") == 0);
   CHECK(json_integer(box, "left") == 0);
+  CHECK(json_integer(box, "chord_splits") == 0);                          // the box has none
+  CHECK(json_integer(box, "best_removed") == json_integer(box, "tets"));  // all peeled, no chord to add tets
   CHECK(json_integer(box, "input_expansions") == json_integer(box, "initial_cluster_vertices"));
   CHECK(json_integer(box, "expansions") ==
         json_integer(box, "input_expansions") + json_integer(box, "cluster_splits"));

@@ -103,7 +103,7 @@ def test_replay_shelling_replays_alg2_checked_independently():
     r = cmx.replay_shelling(T)
     assert r["shelling_found"] and r["completed"], r["message"]
     interior = set(range(len(V))) - set(cmx.boundary_vertices(T).tolist())
-    assert r["input_expansions"] == len(interior)
+    assert r["input_expansions"] == len(interior) + len(r["chord_vertex"])
     assert r["expansions"] == int(r["step_expanded"].sum())
     assert r["expansions"] == r["input_expansions"] + r["cluster_splits"]
     assert r["eq1_failures"] == 0 and r["left"] == 0
@@ -113,6 +113,12 @@ def test_replay_shelling_replays_alg2_checked_independently():
     tets = [list(map(int, t)) for t in T]
     n = len(V)
     cluster = set(interior)
+    for split, v in zip(r["chord_split"].tolist(), r["chord_vertex"].tolist()):
+        simplex = [s for s in split if s >= 0]
+        assert v == n and all(s not in cluster for s in simplex)  # a chord: all its vertices on the boundary
+        tets = _split(tets, simplex, v)
+        n += 1
+        cluster.add(v)
     for i, (kind, split, v, expanded) in enumerate(zip(r["step_kind"].tolist(), r["step_split"].tolist(),
                                                         r["step_vertex"].tolist(), r["step_expanded"].tolist())):
         if kind != 0:
@@ -132,7 +138,7 @@ def test_replay_shelling_replays_alg2_checked_independently():
         cluster.remove(v)
     assert not cluster
     assert cmx.is_ball(tets, n)
-    assert n == len(V) + r["boundary_splits"] + r["cluster_splits"] + r["free_splits"]
+    assert n == len(V) + len(r["chord_vertex"]) + r["boundary_splits"] + r["cluster_splits"] + r["free_splits"]
 
 
 def test_replay_shelling_errors():

@@ -1,6 +1,7 @@
 // Shelling (paper Sec. 4.3) and its conversion to an expansion sequence (Alg. 2).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "topo_test_util.hpp"
@@ -188,7 +189,8 @@ TEST_CASE("Furch: greedy shelling peels the unknotted-hole ball but not the knot
   const ShellingFallback none = shelling_fallback(knot.mesh, {2, 1, {}});
   CHECK(!none.shelling_found);
   CHECK(!none.replayed);
-  CHECK(none.best_removed == no.best_removed);
+  CHECK(none.tets >= knot.mesh.num_tets());  // its chords split first
+  CHECK(none.best_removed < none.tets);
   CHECK(none.message.find("may not be shellable") != std::string::npos);
   // Alg. 2 on the control: every expanded vertex satisfies Eq. (1) when its turn comes, and
   // the cluster mesh stays a ball (checked every 2000 steps).
@@ -301,4 +303,39 @@ TEST_CASE(
       }
   MESSAGE(early << " of " << replays << " replays empty the cluster before their last step");
   CHECK(early > 0);  // the case this test is about does occur
+}
+
+TEST_CASE(
+    "fixed-boundary replay needs the chords split: the unknotted control fails Eq. (1) with them, not "
+    "without") {
+  // With the boundary in place, a chord (an interior simplex whose vertices all lie on the
+  // boundary) inside the remaining ball is a hole in the cluster mesh, and Alg. 2's steps around
+  // it fail Eq. (1). The control has 316 chord simplices; shelling_fallback splits them first.
+  const GridComplex control = unknotted_hole_ball();
+  std::size_t failing = 0;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    CAPTURE(seed);
+    const ShellingResult s = find_shelling(control.mesh, {4, seed, {}});
+    REQUIRE(s.found);
+    const ShellingExpansion e = shelling_to_expansion_sequence(control.mesh, s.order);
+    REQUIRE(e.ok);
+    const FixedBoundaryReplay raw = replay_with_fixed_boundary(control.mesh, e);
+    if (!raw.ok) {
+      ++failing;
+      CHECK(raw.eq1_failures > 0);
+      CHECK(raw.first_failure.find("fails Eq. (1)") != std::string::npos);
+    }
+    const ShellingFallback f = shelling_fallback(control.mesh, {4, seed, {}});
+    CHECK(f.chords.size() == 316);
+    REQUIRE(f.replayed);
+    CHECK_MESSAGE(f.replay.ok, f.message);
+    CHECK(f.replay.eq1_failures == 0);
+    CHECK(f.message.find("after 316 chord splits") != std::string::npos);
+    // Every chord vertex is a new interior vertex, expanded by the replay like an input vertex.
+    for (const ChordSplit& c : f.chords) CHECK(c.vertex >= control.mesh.num_vertices());
+    const std::vector<char> interior = interior_vertex_flags(control.mesh);
+    const auto initial = static_cast<std::size_t>(std::count(interior.begin(), interior.end(), 1));
+    CHECK(f.replay.input_expansions == initial + f.chords.size());
+  }
+  CHECK(failing >= 1);  // the case this test is about does occur
 }
