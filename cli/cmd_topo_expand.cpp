@@ -1,6 +1,6 @@
 // cmx topo-expand (MESH | --builtin NAME) [--order priority|index|strict-index|random:SEED]
-// [--fallback shelling|none] [--json]: topological expansion (paper Sec. 5.1) of a mesh's interior
-// vertices, by Eq. (1) alone, and when it is stuck the shelling fallback of paper Sec. 4.3.
+// [--fallback shelling|always|none] [--check] [--json]: topological expansion (paper Sec. 5.1) of a mesh's
+// interior vertices, by Eq. (1) alone, and when it is stuck the shelling fallback of paper Sec. 4.3.
 //
 // The mesh is read with its file's vertex order kept (no geometric orientation check: this is a
 // combinatorial question), then validated by topology::check_ball, which also checks that the
@@ -44,7 +44,7 @@ namespace {
 using topology::TetMesh;
 
 const HelpText help = {
-    "usage: cmx topo-expand (MESH | --builtin NAME) [--order ORDER] [--fallback shelling|none] [--raw]\n"
+    "usage: cmx topo-expand (MESH | --builtin NAME) [--order ORDER] [--fallback KIND] [--check] [--raw]\n"
     "                       [--json]\n",
     "Topological expansion (paper Sec. 5.1): expands the cluster mesh of the interior vertices\n"
     "greedily by Eq. (1) alone (no geometry) and reports the sequence length, the expansions by\n"
@@ -115,19 +115,18 @@ void print_fallback_json(const std::optional<topology::ShellingFallback>& f) {
   }
   const topology::FixedBoundaryReplay& r = f->replay;
   std::printf(
-      " \"fallback\": {\"chord_splits\": %zu, \"shelling_found\": %s, \"attempts\": %zu, \"best_removed\": "
-      "%zu, "
-      "\"tets\": %zu, \"replayed\": %s,\n"
-      "  \"completed\": %s, \"expansions\": %zu, \"input_expansions\": %zu, \"eq1_failures\": %zu, "
-      "\"left\": %zu,\n"
-      "  \"boundary_splits\": %zu, \"cluster_splits\": %zu, \"free_splits\": %zu, "
-      "\"empty_cone_edge_splits\": "
-      "%zu,\n"
+      " \"fallback\": {\"chord_splits\": %zu, \"shelling_found\": %s, \"attempts\": %zu,"
+      " \"best_removed\": %zu, \"tets\": %zu, \"replayed\": %s,\n"
+      "  \"completed\": %s, \"expansions\": %zu, \"input_expansions\": %zu, \"eq1_failures\": %zu,"
+      " \"left\": %zu,\n"
+      "  \"boundary_splits\": %zu, \"cluster_splits\": %zu, \"free_splits\": %zu,"
+      " \"empty_cone_edge_splits\": %zu,\n"
+      "  \"checks\": %zu, \"check_failures\": %zu,\n"
       "  \"message\": %s},\n",
       f->chords.size(), f->shelling_found ? "true" : "false", f->attempts, f->best_removed, f->tets,
       f->replayed ? "true" : "false", f->replayed && r.ok ? "true" : "false", r.expansions,
       r.input_expansions, r.eq1_failures, r.left, r.boundary_splits, r.cluster_splits, r.free_splits,
-      r.empty_cone_edge_splits, json_quote(f->message).c_str());
+      r.empty_cone_edge_splits, r.checks, r.check_failures, json_quote(f->message).c_str());
 }
 
 void print_fallback_text(const std::optional<topology::ShellingFallback>& f, double seconds) {
@@ -143,6 +142,9 @@ void print_fallback_text(const std::optional<topology::ShellingFallback>& f, dou
         "replay splits: %zu of boundary simplices, %zu with a cluster vertex, %zu of expanded simplices; %zu "
         "expansions split a cluster edge facing a mirrored pair (an empty geometric cone)\n",
         r.boundary_splits, r.cluster_splits, r.free_splits, r.empty_cone_edge_splits);
+    if (r.checks > 0)
+      std::printf("replay checks (--check): %zu cluster meshes, %zu not simply connected\n", r.checks,
+                  r.check_failures);
   }
   std::printf("time: %.3f s (fallback)\n", seconds);
 }
@@ -209,7 +211,7 @@ Input read_input(const std::string& path, const std::string& builtin) {
 int run(const std::vector<std::string>& args) {
   std::string path, builtin;
   topology::ExpansionOrder order = *topology::parse_expansion_order("priority");
-  bool json = false, raw = false;
+  bool json = false, raw = false, check = false;
   std::string fallback_name = "shelling";
   CommandLine line("topo-expand", help);
   CLI::App& app = line.app();
@@ -230,9 +232,14 @@ int run(const std::vector<std::string>& args) {
                    "random:SEED (seeded permutation)");
   app.add_option("--fallback", fallback_name,
                  "shelling (default: when stuck, look for a shelling of the mesh and replay\n"
-                 "it by Alg. 2 from the start, boundary in place) or none")
-      ->check(CLI::IsMember({"shelling", "none"}))
+                 "it by Alg. 2 from the start, boundary in place), always (the same even\n"
+                 "when the greedy run completes: to study Alg. 2 on any ball) or none")
+      ->check(CLI::IsMember({"shelling", "always", "none"}))
       ->type_name("KIND");
+  app.add_flag("--check", check,
+               "check before and after every expansion of the fallback's replay that the\n"
+               "cluster mesh is simply connected (Corollary 1); O(T) per expansion: about\n"
+               "2 minutes on bings-house-box");
   app.add_flag("--raw", raw,
                "skip the chord splits that first make the interior mesh simply\n"
                "connected (by default chords are split as cmx map does: only those\n"
@@ -252,7 +259,8 @@ int run(const std::vector<std::string>& args) {
   const auto expanded = std::chrono::steady_clock::now();
   const double seconds = std::chrono::duration<double>(expanded - start).count();
   std::optional<topology::ShellingFallback> fallback;
-  if (result.stuck && fallback_name == "shelling") fallback = topology::shelling_fallback(in.mesh);
+  if (fallback_name == "always" || (result.stuck && fallback_name == "shelling"))
+    fallback = topology::shelling_fallback(in.mesh, {}, check ? 1 : 0);
   const double fallback_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - expanded).count();
   print_report(in, order, result, seconds, fallback, fallback_seconds, json);

@@ -31,7 +31,8 @@ bool faces_mirrored_pair(const TetMesh& m, VertexId mid, const std::vector<char>
 
 }  // namespace
 
-FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const ShellingExpansion& sequence) {
+FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const ShellingExpansion& sequence,
+                                               std::size_t check_every) {
   FixedBoundaryReplay r;
   TetMesh m = input;
   const std::vector<char> boundary = boundary_vertex_flags(m);
@@ -40,6 +41,16 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
   std::size_t cluster_left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
   ClusterLinkWorkspace ws;
   r.step_expanded.assign(sequence.steps.size(), 0);
+  const auto check = [&](const TetMesh& now, std::size_t step) {
+    ++r.checks;
+    const SubcomplexCounts c = cluster_mesh_counts(now, unexpanded);
+    if (c.vertices == 0 || (c.components == 1 && c.euler == 1)) return;
+    if (r.check_failures++ == 0 && r.first_failure.empty())
+      r.first_failure = "after step " + std::to_string(step) +
+                        ": the cluster mesh is not simply connected (" + std::to_string(c.components) +
+                        " components, Euler characteristic " + std::to_string(c.euler) + ")";
+  };
+  if (check_every > 0) check(m, 0);
   for (std::size_t i = 0; i < sequence.steps.size(); ++i) {
     const ExpansionStep& st = sequence.steps[i];
     bool edge_of_cluster = false;
@@ -77,19 +88,22 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
     // The last cluster vertex goes automatically (its Lk• is empty), as in topological_expansion.
     // That is not always the paper's last step: boundary vertices of the last cells may follow.
     if (cluster_left > 1 && !is_topologically_expandable(m, st.vertex, unexpanded, ws)) {
-      if (r.eq1_failures++ == 0)
+      if (r.eq1_failures++ == 0 && r.first_failure.empty())
         r.first_failure =
             "step " + std::to_string(i) + ": vertex " + std::to_string(st.vertex) + " fails Eq. (1)";
     }
     unexpanded[st.vertex] = 0;
     --cluster_left;
+    if (check_every > 0 && r.expansions % check_every == 0) check(m, i);
   }
+  if (check_every > 0 && r.expansions % check_every != 0) check(m, sequence.steps.size());
   r.left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
-  r.ok = r.eq1_failures == 0 && r.left == 0;
+  r.ok = r.eq1_failures == 0 && r.check_failures == 0 && r.left == 0;
   return r;
 }
 
-ShellingFallback shelling_fallback(const TetMesh& mesh, const ShellingOptions& options) {
+ShellingFallback shelling_fallback(const TetMesh& mesh, const ShellingOptions& options,
+                                   std::size_t check_every) {
   ShellingFallback f;
   TetMesh input = mesh;
   std::vector<char> boundary = boundary_vertex_flags(input);
@@ -126,7 +140,7 @@ ShellingFallback shelling_fallback(const TetMesh& mesh, const ShellingOptions& o
     return f;
   }
   f.replayed = true;
-  f.replay = replay_with_fixed_boundary(input, sequence);
+  f.replay = replay_with_fixed_boundary(input, sequence, check_every);
   f.steps = sequence.steps;
   const std::string found = "a shelling of the " + tets + " tets" + chords + " found in " +
                             std::to_string(f.attempts) +

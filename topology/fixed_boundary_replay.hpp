@@ -42,13 +42,19 @@ struct FixedBoundaryReplay {
   std::size_t left = 0;                    // cluster vertices left at the end
   std::string first_failure;               // the first step that failed Eq. (1), when one did
   std::vector<char> step_expanded;         // per step: 1 when it expanded a cluster vertex (0: skipped)
+  std::size_t checks = 0;                  // cluster meshes checked to be simply connected (check_every)
+  std::size_t check_failures = 0;  // of those, not empty and not connected with Euler characteristic 1
 };
 
 // Preconditions: `input` is the mesh `sequence` was computed from
 // (shelling_to_expansion_sequence), `sequence.ok`, and check_ball(input).ok. O(T) plus the
-// Eq. (1) tests, one per expansion.
+// Eq. (1) tests, one per expansion. With check_every = k > 0 the cluster mesh is also checked
+// before the first expansion, after every k-th and at the end to be empty or connected with
+// Euler characteristic 1 (Corollary 1: Eq. (1) expansions keep it simply connected), O(T) each;
+// a failed check fails the replay.
 [[nodiscard]] FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input,
-                                                             const ShellingExpansion& sequence);
+                                                             const ShellingExpansion& sequence,
+                                                             std::size_t check_every = 0);
 
 // The fallback of paper Sec. 4.3 for a run without geometry (cmx topo-expand): split every
 // chord of `input`, look for a shelling of the result (find_shelling, bounded by `options`) and,
@@ -83,6 +89,8 @@ struct ShellingFallback {
 };
 
 // Precondition: check_ball(input).ok. O(attempts * T log T) plus the replay.
-[[nodiscard]] ShellingFallback shelling_fallback(const TetMesh& input, const ShellingOptions& options = {});
+// check_every: as for replay_with_fixed_boundary.
+[[nodiscard]] ShellingFallback shelling_fallback(const TetMesh& input, const ShellingOptions& options = {},
+                                                 std::size_t check_every = 0);
 
 }  // namespace cmx::topology

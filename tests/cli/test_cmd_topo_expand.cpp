@@ -225,6 +225,26 @@ TEST_CASE(
   CHECK(json_has(expand_json("bings-house-box", "priority", "shelling"), "\"fallback\": null"));
 }
 
+TEST_CASE(
+    "cmx topo-expand --fallback always --check: the replay on a grid, its cluster mesh checked at every "
+    "step") {
+  const auto r =
+      run_cmx({"topo-expand", "--builtin", "grid:4,3,3", "--fallback", "always", "--check", "--json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(json_has(r.out, "\"stuck\": false"));  // the greedy run completes; the replay runs anyway
+  CHECK(json_has(r.out, "\"completed\": true"));
+  const long expansions = json_integer(r.out, "expansions");
+  CHECK(expansions >= json_integer(r.out, "initial_cluster_vertices"));
+  CHECK(json_integer(r.out, "checks") == expansions + 1);  // before the first and after each
+  CHECK(json_integer(r.out, "check_failures") == 0);
+  const auto text = run_cmx({"topo-expand", "--builtin", "grid:4,3,3", "--fallback", "always", "--check"});
+  CHECK(json_has(text.out, "replay checks (--check): " + std::to_string(expansions + 1) +
+                               " cluster meshes, 0 not simply connected"));
+  // Without --check nothing is counted.
+  CHECK(json_integer(expand_json("grid:4,3,3", "index", "always"), "checks") == 0);
+}
+
 TEST_CASE("cmx topo-expand: usage errors exit 2") {
   const auto bad_order = run_cmx({"topo-expand", "--builtin", "grid:2,2,2", "--order", "shelling"});
   CHECK(bad_order.exit_code == 2);

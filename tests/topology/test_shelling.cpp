@@ -292,9 +292,11 @@ TEST_CASE(
         REQUIRE(s.found);
         const ShellingExpansion e = shelling_to_expansion_sequence(g.mesh, s.order);
         REQUIRE(e.ok);
-        const FixedBoundaryReplay f = replay_with_fixed_boundary(g.mesh, e);
+        const FixedBoundaryReplay f = replay_with_fixed_boundary(g.mesh, e, 1);
         CHECK_MESSAGE(f.ok, f.first_failure);
         CHECK(f.left == 0);
+        CHECK(f.checks == f.expansions + 1);  // simply connected before and after every expansion
+        CHECK(f.check_failures == 0);
         ++replays;
         std::size_t last = 0;
         for (std::size_t i = 0; i < f.step_expanded.size(); ++i)
@@ -319,13 +321,18 @@ TEST_CASE(
     REQUIRE(s.found);
     const ShellingExpansion e = shelling_to_expansion_sequence(control.mesh, s.order);
     REQUIRE(e.ok);
-    const FixedBoundaryReplay raw = replay_with_fixed_boundary(control.mesh, e);
+    // The cluster mesh is checked every 100 expansions to be simply connected: with the chords
+    // in place it is not, at some check, on the failing seeds (35 and 1 of 192 checks).
+    const FixedBoundaryReplay raw = replay_with_fixed_boundary(control.mesh, e, 100);
+    CHECK(raw.checks == 1 + (raw.expansions + 99) / 100);
     if (!raw.ok) {
       ++failing;
       CHECK(raw.eq1_failures > 0);
-      CHECK(raw.first_failure.find("fails Eq. (1)") != std::string::npos);
+      CHECK(raw.check_failures > 0);
     }
-    const ShellingFallback f = shelling_fallback(control.mesh, {4, seed, {}});
+    const ShellingFallback f = shelling_fallback(control.mesh, {4, seed, {}}, 100);
+    CHECK(f.replay.checks > 0);
+    CHECK(f.replay.check_failures == 0);
     CHECK(f.chords.size() == 316);
     REQUIRE(f.replayed);
     CHECK_MESSAGE(f.replay.ok, f.message);
