@@ -98,13 +98,13 @@ TopologicalExpansion expand_topologically(std::span<const Tet> tets, std::size_t
 }
 
 ShellingReplay replay_shelling(std::span<const Tet> tets, std::size_t vertex_count, std::uint64_t seed,
-                               std::size_t attempts) {
+                               std::size_t attempts, std::size_t check_every) {
   if (attempts == 0) throw Error("replay_shelling: attempts must be at least 1");
   const topology::TetMesh mesh = ball_mesh("replay_shelling", tets, vertex_count);
   topology::ShellingOptions options;
   options.max_attempts = attempts;
   options.seed = seed;
-  const topology::ShellingFallback f = topology::shelling_fallback(mesh, options);
+  const topology::ShellingFallback f = topology::shelling_fallback(mesh, options, check_every);
   ShellingReplay out;
   out.shelling_found = f.shelling_found;
   out.attempts = f.attempts;
@@ -118,6 +118,8 @@ ShellingReplay replay_shelling(std::span<const Tet> tets, std::size_t vertex_cou
   out.cluster_splits = f.replay.cluster_splits;
   out.free_splits = f.replay.free_splits;
   out.empty_cone_edge_splits = f.replay.empty_cone_edge_splits;
+  out.checks = f.replay.checks;
+  out.check_failures = f.replay.check_failures;
   out.message = f.message;
   for (const topology::ChordSplit& c : f.chords) {
     ReplayStep step;

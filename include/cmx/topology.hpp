@@ -110,7 +110,8 @@ struct ShellingReplay {
   // expanded, around it: their geometric cone is empty while x and y sit at the shrink point,
   // which is why cmx::map_to_domain does not replay shellings (docs/algorithm/expansion.md).
   std::size_t empty_cone_edge_splits = 0;
-  std::string message;  // one sentence: the search's and the replay's verdict
+  std::size_t checks = 0, check_failures = 0;  // with check_every > 0
+  std::string message;                         // one sentence: the search's and the replay's verdict
   // The chord splits made first (interior edges and faces whose vertices all lie on the boundary;
   // with the boundary in place a chord leaves a hole in the cluster mesh and Eq. (1) can fail):
   // their vertices are interior, numbered from vertex_count on, and expanded by later steps.
@@ -123,11 +124,14 @@ struct ShellingReplay {
 // looks for a shelling of the ball (at most `attempts` greedy attempts, seeded by `seed`; not
 // finding one proves nothing), converts it by Alg. 2 and replays it from the start with the boundary vertices
 // expanded and the interior ones in the cluster mesh, checking Eq. (1) at every expansion. This is
-// what `cmx topo-expand` runs when its greedy expansion is stuck.
+// what `cmx topo-expand` runs when its greedy expansion is stuck. With check_every = k > 0 the
+// cluster mesh is also checked, before the first expansion, after every k-th and at the end, to
+// be empty or connected with Euler characteristic 1 (Corollary 1), O(T) per check: a failed
+// check makes `completed` false and is counted in `check_failures`.
 // Errors: throws cmx::Error when the tets are not a ball, an index is >= vertex_count, or
 // attempts is 0. Not finding a shelling is a result (shelling_found = false), not an error.
 // Time: O(attempts * T log T) for bounded valence, plus the replay.
 ShellingReplay replay_shelling(std::span<const Tet> tets, std::size_t vertex_count, std::uint64_t seed = 1,
-                               std::size_t attempts = 8);
+                               std::size_t attempts = 8, std::size_t check_every = 0);
 
 }  // namespace cmx

@@ -55,7 +55,8 @@ def expand_topologically(T: Any, cluster_vertices: Any = (), order: str = "prior
                                                           dtype=np.uint32), order)
 
 
-def replay_shelling(T: Any, seed: int = 1, attempts: int = 8, vertex_count: Optional[int] = None) -> dict:
+def replay_shelling(T: Any, seed: int = 1, attempts: int = 8, vertex_count: Optional[int] = None,
+                    check_every: int = 0) -> dict:
     """The shelling fallback of paper Sec. 4.3, topology only (what `cmx topo-expand` runs when
     stuck): split every chord (interior edge or face whose vertices all lie on the boundary), look
     for a shelling of the ball (at most `attempts` greedy attempts), convert it by Alg. 2 and
@@ -66,10 +67,11 @@ def replay_shelling(T: Any, seed: int = 1, attempts: int = 8, vertex_count: Opti
     where unused) and chord_vertex (new interior vertices numbered from vertex_count on); and the
     sequence as arrays step_kind (0 vertex, 1 edge split, 2 face split), step_split, step_vertex
     (split vertices numbered after the chords') and step_expanded (False: already expanded,
-    skipped)."""
-    for name, value, least in (("attempts", attempts, 1), ("seed", seed, 0)):
+    skipped). check_every = k > 0 also checks the cluster mesh simply connected before the first
+    expansion, after every k-th and at the end (keys checks, check_failures; O(T) each)."""
+    for name, value, least in (("attempts", attempts, 1), ("seed", seed, 0), ("check_every", check_every, 0)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < least \
                 or value >= 2**64:
             raise _cmx.InvalidOptions(f"option {name}: expected an integer >= {least}, got {value!r}")
     t = _tets(T, vertex_count)
-    return _cmx.replay_shelling(t, _vertex_count(t, vertex_count), int(seed), int(attempts))
+    return _cmx.replay_shelling(t, _vertex_count(t, vertex_count), int(seed), int(attempts), int(check_every))

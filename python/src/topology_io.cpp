@@ -85,12 +85,13 @@ void bind_topology(py::module_& m) {
       py::arg("T"), py::arg("vertex_count"), py::arg("cluster_vertices"), py::arg("order"));
   m.def(
       "replay_shelling",
-      [](const IndexArray& tets, std::size_t vertex_count, std::uint64_t seed, std::size_t attempts) {
+      [](const IndexArray& tets, std::size_t vertex_count, std::uint64_t seed, std::size_t attempts,
+         std::size_t check_every) {
         const std::vector<Tet> t = tets_of(tets, "T");
         ShellingReplay x;
         {
           py::gil_scoped_release release;
-          x = replay_shelling(t, vertex_count, seed, attempts);
+          x = replay_shelling(t, vertex_count, seed, attempts, check_every);
         }
         py::dict d;
         d["shelling_found"] = x.shelling_found;
@@ -105,12 +106,14 @@ void bind_topology(py::module_& m) {
         d["cluster_splits"] = x.cluster_splits;
         d["free_splits"] = x.free_splits;
         d["empty_cone_edge_splits"] = x.empty_cone_edge_splits;
+        d["checks"] = x.checks;
+        d["check_failures"] = x.check_failures;
         d["message"] = x.message;
         add_replay_steps(d, "chord", x.chords);
         add_replay_steps(d, "step", x.steps);
         return d;
       },
-      py::arg("T"), py::arg("vertex_count"), py::arg("seed"), py::arg("attempts"));
+      py::arg("T"), py::arg("vertex_count"), py::arg("seed"), py::arg("attempts"), py::arg("check_every"));
 }
 
 void bind_io(py::module_& m) {

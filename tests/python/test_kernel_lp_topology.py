@@ -100,8 +100,9 @@ def _split(T, simplex, m):
 
 def test_replay_shelling_replays_alg2_checked_independently():
     V, T = grid_ball(3)
-    r = cmx.replay_shelling(T)
+    r = cmx.replay_shelling(T, check_every=1)
     assert r["shelling_found"] and r["completed"], r["message"]
+    assert r["checks"] == r["expansions"] + 1 and r["check_failures"] == 0
     interior = set(range(len(V))) - set(cmx.boundary_vertices(T).tolist())
     assert r["input_expansions"] == len(interior) + len(r["chord_vertex"])
     assert r["expansions"] == int(r["step_expanded"].sum())
@@ -148,5 +149,7 @@ def test_replay_shelling_errors():
             cmx.replay_shelling(T, attempts=bad)
     with pytest.raises(cmx.InvalidOptions):
         cmx.replay_shelling(T, seed=-3)
+    with pytest.raises(cmx.InvalidOptions):
+        cmx.replay_shelling(T, check_every=-1)
     with pytest.raises(cmx.Error, match="not a ball"):
         cmx.replay_shelling(np.vstack([T, T[:1]]))  # a repeated tet
