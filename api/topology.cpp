@@ -112,6 +112,7 @@ ShellingReplay replay_shelling(std::span<const Tet> tets, std::size_t vertex_cou
   out.completed = f.replayed && f.replay.ok;
   out.expansions = f.replay.expansions;
   out.input_expansions = f.replay.input_expansions;
+  out.chord_expansions = f.chord_expansions;
   out.eq1_failures = f.replay.eq1_failures;
   out.left = f.replay.left;
   out.boundary_splits = f.replay.boundary_splits;

@@ -115,9 +115,10 @@ void print_fallback_json(const std::optional<topology::ShellingFallback>& f) {
   }
   const topology::FixedBoundaryReplay& r = f->replay;
   std::printf(
-      " \"fallback\": {\"chord_splits\": %zu, \"shelling_found\": %s, \"attempts\": %zu,"
+      " \"fallback\": {\"split_chords\": %zu, \"shelling_found\": %s, \"attempts\": %zu,"
       " \"best_removed\": %zu, \"tets\": %zu, \"replayed\": %s,\n"
-      "  \"completed\": %s, \"expansions\": %zu, \"input_expansions\": %zu, \"eq1_failures\": %zu,"
+      "  \"completed\": %s, \"expansions\": %zu, \"input_expansions\": %zu, \"chord_expansions\": %zu,"
+      " \"eq1_failures\": %zu,"
       " \"left\": %zu,\n"
       "  \"boundary_splits\": %zu, \"cluster_splits\": %zu, \"free_splits\": %zu,"
       " \"empty_cone_edge_splits\": %zu,\n"
@@ -125,8 +126,8 @@ void print_fallback_json(const std::optional<topology::ShellingFallback>& f) {
       "  \"message\": %s},\n",
       f->chords.size(), f->shelling_found ? "true" : "false", f->attempts, f->best_removed, f->tets,
       f->replayed ? "true" : "false", f->replayed && r.ok ? "true" : "false", r.expansions,
-      r.input_expansions, r.eq1_failures, r.left, r.boundary_splits, r.cluster_splits, r.free_splits,
-      r.empty_cone_edge_splits, r.checks, r.check_failures, json_quote(f->message).c_str());
+      r.input_expansions, f->chord_expansions, r.eq1_failures, r.left, r.boundary_splits, r.cluster_splits,
+      r.free_splits, r.empty_cone_edge_splits, r.checks, r.check_failures, json_quote(f->message).c_str());
 }
 
 void print_fallback_text(const std::optional<topology::ShellingFallback>& f, double seconds) {
@@ -135,9 +136,10 @@ void print_fallback_text(const std::optional<topology::ShellingFallback>& f, dou
   if (f->replayed) {
     const topology::FixedBoundaryReplay& r = f->replay;
     std::printf(
-        "replay: %zu expansions (%zu input vertices, %zu split vertices), %zu failing Eq. (1), %zu cluster "
-        "vertices left\n",
-        r.expansions, r.input_expansions, r.expansions - r.input_expansions, r.eq1_failures, r.left);
+        "replay: %zu expansions (%zu input vertices, %zu chord vertices, %zu split vertices), %zu failing "
+        "Eq. (1), %zu cluster vertices left\n",
+        r.expansions, r.input_expansions, f->chord_expansions,
+        r.expansions - r.input_expansions - f->chord_expansions, r.eq1_failures, r.left);
     std::printf(
         "replay splits: %zu of boundary simplices, %zu with a cluster vertex, %zu of expanded simplices; %zu "
         "expansions split a cluster edge facing a mirrored pair (an empty geometric cone)\n",

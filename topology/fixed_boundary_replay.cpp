@@ -142,6 +142,12 @@ ShellingFallback shelling_fallback(const TetMesh& mesh, const ShellingOptions& o
   f.replayed = true;
   f.replay = replay_with_fixed_boundary(input, sequence, check_every);
   f.steps = sequence.steps;
+  // The replay counts the chord vertices as vertices of the mesh it replays; report them apart.
+  const std::size_t first_chord = mesh.num_vertices(), past_chords = first_chord + f.chords.size();
+  for (std::size_t i = 0; i < f.steps.size(); ++i)
+    if (f.replay.step_expanded[i] && f.steps[i].vertex >= first_chord && f.steps[i].vertex < past_chords)
+      ++f.chord_expansions;
+  f.replay.input_expansions -= f.chord_expansions;
   const std::string found = "a shelling of the " + tets + " tets" + chords + " found in " +
                             std::to_string(f.attempts) +
                             (f.attempts == 1 ? " greedy attempt" : " greedy attempts");

@@ -76,14 +76,15 @@ struct ChordSplit {
 };
 
 struct ShellingFallback {
-  std::vector<ChordSplit> chords;  // the chord splits, in order, before the shelling
+  std::vector<ChordSplit> chords;    // the chord splits, in order, before the shelling
+  std::size_t chord_expansions = 0;  // chord vertices the replay expanded (not in replay.input_expansions)
   bool shelling_found = false;
   std::size_t attempts = 0;      // greedy shelling attempts made
   std::size_t best_removed = 0;  // most tets one attempt removed (all of them when found)
   std::size_t tets = 0;          // tets of the mesh shelled (the input after the chord splits)
   bool stopped_at_deadline = false;
   bool replayed = false;             // a sequence was converted and replayed
-  FixedBoundaryReplay replay;        // meaningful when `replayed`
+  FixedBoundaryReplay replay;        // meaningful when `replayed`; its input_expansions: the input's own
   std::vector<ExpansionStep> steps;  // Alg. 2's sequence when `replayed` (replay.step_expanded: which ran)
   std::string message;               // one sentence: what was found and how the replay ended
 };

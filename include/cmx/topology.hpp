@@ -100,12 +100,14 @@ struct ShellingReplay {
   std::size_t best_removed = 0;      // most tets one attempt removed (every tet when found)
   bool completed = false;            // a shelling was replayed and every interior vertex was expanded
   std::size_t expansions = 0;        // cluster vertices the replay expanded
-  std::size_t input_expansions = 0;  // of those, vertices of the input (the others are split vertices)
-  std::size_t eq1_failures = 0;      // expansions that did not satisfy Eq. (1) at their turn
-  std::size_t left = 0;              // cluster vertices never expanded
-  std::size_t boundary_splits = 0;   // splits of boundary simplices (boundary vertices: not expanded)
-  std::size_t cluster_splits = 0;    // splits of simplices with a cluster vertex (expanded in turn)
-  std::size_t free_splits = 0;       // splits of interior simplices of expanded vertices (not expanded)
+  std::size_t input_expansions = 0;  // of those, vertices of the input
+  std::size_t chord_expansions =
+      0;                         // of those, vertices splitting chords (the others: Alg. 2's split vertices)
+  std::size_t eq1_failures = 0;  // expansions that did not satisfy Eq. (1) at their turn
+  std::size_t left = 0;          // cluster vertices never expanded
+  std::size_t boundary_splits = 0;  // splits of boundary simplices (boundary vertices: not expanded)
+  std::size_t cluster_splits = 0;   // splits of simplices with a cluster vertex (expanded in turn)
+  std::size_t free_splits = 0;      // splits of interior simplices of expanded vertices (not expanded)
   // Expansions of a vertex splitting a cluster edge (x, y) with a tet (x, y, s, t), s and t
   // expanded, around it: their geometric cone is empty while x and y sit at the shrink point,
   // which is why cmx::map_to_domain does not replay shellings (docs/algorithm/expansion.md).

@@ -61,7 +61,7 @@ def replay_shelling(T: Any, seed: int = 1, attempts: int = 8, vertex_count: Opti
     stuck): split every chord (interior edge or face whose vertices all lie on the boundary), look
     for a shelling of the ball (at most `attempts` greedy attempts), convert it by Alg. 2 and
     replay it from the start with the boundary in place, checking Eq. (1) at every expansion. A
-    dict with shelling_found, attempts, best_removed, completed, expansions, input_expansions,
+    dict with shelling_found, attempts, best_removed, completed, expansions, input_expansions, chord_expansions,
     eq1_failures, left, boundary_splits, cluster_splits, free_splits, empty_cone_edge_splits,
     message; the chord splits as arrays chord_kind (1 edge, 2 face), chord_split ((c, 3), -1
     where unused) and chord_vertex (new interior vertices numbered from vertex_count on); and the

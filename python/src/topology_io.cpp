@@ -100,6 +100,7 @@ void bind_topology(py::module_& m) {
         d["completed"] = x.completed;
         d["expansions"] = x.expansions;
         d["input_expansions"] = x.input_expansions;
+        d["chord_expansions"] = x.chord_expansions;
         d["eq1_failures"] = x.eq1_failures;
         d["left"] = x.left;
         d["boundary_splits"] = x.boundary_splits;

@@ -205,7 +205,8 @@ TEST_CASE("api replay_shelling: the house box replays completely, the knotted ho
   }
   CHECK(expanded == r.expansions);
   CHECK(splits == r.boundary_splits + r.cluster_splits + r.free_splits);
-  CHECK(r.expansions == r.input_expansions + r.cluster_splits);
+  CHECK(r.chord_expansions == r.chords.size());  // none here
+  CHECK(r.expansions == r.input_expansions + r.chord_expansions + r.cluster_splits);
   CHECK(r.empty_cone_edge_splits > 0);
 
   const auto knot = cmx::topology::knotted_hole_ball();

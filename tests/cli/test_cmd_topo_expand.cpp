@@ -237,6 +237,13 @@ TEST_CASE(
   const long expansions = json_integer(r.out, "expansions");
   CHECK(expansions >= json_integer(r.out, "initial_cluster_vertices"));
   CHECK(json_integer(r.out, "checks") == expansions + 1);  // before the first and after each
+  // The fallback splits every chord first; their vertices are reported apart from the input's.
+  CHECK(json_integer(r.out, "chord_splits") == 0);  // the greedy run's: none needed on a grid
+  CHECK(json_integer(r.out, "split_chords") > 0);   // the fallback's: every chord
+  CHECK(json_integer(r.out, "chord_expansions") == json_integer(r.out, "split_chords"));
+  CHECK(json_integer(r.out, "input_expansions") == json_integer(r.out, "initial_cluster_vertices"));
+  CHECK(expansions == json_integer(r.out, "input_expansions") + json_integer(r.out, "chord_expansions") +
+                          json_integer(r.out, "cluster_splits"));
   CHECK(json_integer(r.out, "check_failures") == 0);
   const auto text = run_cmx({"topo-expand", "--builtin", "grid:4,3,3", "--fallback", "always", "--check"});
   CHECK(json_has(text.out, "replay checks (--check): " + std::to_string(expansions + 1) +
