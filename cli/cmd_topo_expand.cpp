@@ -246,7 +246,7 @@ int run(const std::vector<std::string>& args) {
                "skip the chord splits that first make the interior mesh simply\n"
                "connected (by default chords are split as cmx map does: only those\n"
                "that disconnect the interior or are axes of its handles, then every\n"
-               "chord if needed)");
+               "chord if needed; the fallback splits every chord in any case)");
   app.add_flag("--json", json, "one JSON object on stdout (with cmx_version)");
   line.quiet_flag()->description("accepted for uniformity: topo-expand prints only its results");
   if (const auto done = line.parse(args)) return *done;
