@@ -182,6 +182,8 @@ void search_fallback(const MapProblem& problem, RunControl& control, MapResult& 
   s.shelling_found = v.found;
   s.shelling_attempts = v.attempts;
   s.shelling_best_removed = v.best_removed;
+  s.shelling_tets = v.tets;
+  s.shelling_split_chords = v.split_chords;
   s.shelling_replay_completed = v.replay_completed;
   s.shelling_replay_expansions = v.replay_expansions;
   s.shelling_replay_empty_cone_steps = v.replay_empty_cone_steps;

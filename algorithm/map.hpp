@@ -178,6 +178,7 @@ struct MapStatistics {
   bool nobuenoss = false;
   bool shelling_found = false;
   std::size_t shelling_attempts = 0, shelling_best_removed = 0;
+  std::size_t shelling_tets = 0, shelling_split_chords = 0;  // the mesh searched: the input, chords split
   bool shelling_replay_completed = false;  // its topological replay by Alg. 2 (shelling_fallback.hpp)
   std::size_t shelling_replay_expansions = 0, shelling_replay_empty_cone_steps = 0;
   std::size_t refinement_collapses = 0;       // added vertices collapsed right after their refinement

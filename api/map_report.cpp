@@ -48,7 +48,8 @@ void add_collapse_counts(JsonObject& ex, const algorithm::MapStatistics& s) {
   if (s.nobuenoss) {
     JsonObject shell;
     shell.flag("found", s.shelling_found).num("attempts", n(s.shelling_attempts));
-    shell.num("best_removed", n(s.shelling_best_removed)).num("tets", n(s.input_tets));
+    shell.num("best_removed", n(s.shelling_best_removed)).num("tets", n(s.shelling_tets));
+    shell.num("split_chords", n(s.shelling_split_chords));
     shell.flag("replay_completed", s.shelling_replay_completed)
         .num("replay_expansions", n(s.shelling_replay_expansions));
     shell.num("replay_empty_cone_steps", n(s.shelling_replay_empty_cone_steps));

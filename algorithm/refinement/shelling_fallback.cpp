@@ -17,6 +17,7 @@ ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, st
   v.attempts = f.attempts;
   v.best_removed = f.best_removed;  // all tets when found
   v.tets = f.tets;                  // after the chord splits
+  v.split_chords = f.chords.size();
   v.replay_completed = f.replayed && f.replay.ok;
   v.replay_expansions = f.replay.expansions;
   v.replay_empty_cone_steps = f.replay.empty_cone_edge_splits;
@@ -38,6 +39,7 @@ ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, st
     v.message = "no shelling of the input found in " + std::to_string(f.attempts) +
                 " greedy attempts (at most " + std::to_string(f.best_removed) + " of " +
                 std::to_string(v.tets) + " tets peeled" +
+                (f.chords.empty() ? "" : ", after " + std::to_string(f.chords.size()) + " chord splits") +
                 (f.stopped_at_deadline ? ", cut short by the time limit" : "") +
                 "), and the fallback of paper Sec. 4.3 needs one: the input may not be shellable";
   return v;

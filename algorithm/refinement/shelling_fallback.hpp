@@ -28,7 +28,8 @@ struct ShellingVerdict {
   bool found = false;
   std::size_t attempts = 0;
   std::size_t best_removed = 0;  // most tets one greedy attempt removed
-  std::size_t tets = 0;  // of the mesh searched: the input after splitting every chord
+  std::size_t tets = 0;          // of the mesh searched: the input after splitting every chord
+  std::size_t split_chords = 0;
   // When found: Alg. 2's topological replay of it with the boundary in place
   // (topology/fixed_boundary_replay.hpp), which is what `cmx topo-expand` reports.
   bool replay_completed = false;  // every interior vertex expanded, each satisfying Eq. (1)

@@ -325,6 +325,9 @@ TEST_CASE("cmx map: a NOBUENOSS cluster mesh exits 7 (stuck), says so in the rep
   CHECK(json.find("\"found\": false") != std::string::npos);
   CHECK(json.find("\"attempts\": 8") != std::string::npos);
   CHECK(json.find("\"shelling_search\": 0,") == std::string::npos);  // timed, and it took a while
+  // The report names the mesh searched: the input with every chord split (none in this house).
+  CHECK(json.find("\"split_chords\": 0") != std::string::npos);
+  CHECK(json.find("\"replay_completed\": false") != std::string::npos);
   CHECK(r.err.find("no shelling of the input found") != std::string::npos);
 }
 
