@@ -29,6 +29,28 @@ bool faces_mirrored_pair(const TetMesh& m, VertexId mid, const std::vector<char>
   return false;
 }
 
+// The fallback's one-sentence verdict, once the search (and the replay, when it ran) is done.
+std::string fallback_message(const ShellingFallback& f) {
+  const std::string tets = std::to_string(f.tets) + " tets";
+  const std::string chords = std::to_string(f.chords.size()) + " chord splits";
+  if (!f.shelling_found)
+    return "no shelling found in " + std::to_string(f.attempts) + " greedy attempts (at most " +
+           std::to_string(f.best_removed) + " of " + tets + " peeled" +
+           (f.chords.empty() ? "" : ", after " + chords) + (f.stopped_at_deadline ? ", cut short" : "") +
+           "): the input may not be shellable";
+  const std::string found =
+      "a shelling of the " + tets + (f.chords.empty() ? "" : " (after " + chords + ")") + " found in " +
+      std::to_string(f.attempts) + (f.attempts == 1 ? " greedy attempt" : " greedy attempts");
+  if (f.replay.ok)
+    return found +
+           "; Alg. 2 replayed from the start with the boundary in place expands every interior vertex (" +
+           std::to_string(f.replay.expansions) + " expansions, " + std::to_string(f.replay.cluster_splits) +
+           " of them split vertices)";
+  return found + ", but its replay failed: " +
+         (f.replay.first_failure.empty() ? std::to_string(f.replay.left) + " cluster vertices left"
+                                         : f.replay.first_failure);
+}
+
 }  // namespace
 
 FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const ShellingExpansion& sequence,
@@ -41,16 +63,15 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
   std::size_t cluster_left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
   ClusterLinkWorkspace ws;
   r.step_expanded.assign(sequence.steps.size(), 0);
-  const auto check = [&](const TetMesh& now, std::size_t step) {
+  const auto check = [&](const TetMesh& now, const std::string& when) {
     ++r.checks;
     const SubcomplexCounts c = cluster_mesh_counts(now, unexpanded);
     if (c.vertices == 0 || (c.components == 1 && c.euler == 1)) return;
     if (r.check_failures++ == 0 && r.first_failure.empty())
-      r.first_failure = "after step " + std::to_string(step) +
-                        ": the cluster mesh is not simply connected (" + std::to_string(c.components) +
+      r.first_failure = when + ": the cluster mesh is not simply connected (" + std::to_string(c.components) +
                         " components, Euler characteristic " + std::to_string(c.euler) + ")";
   };
-  if (check_every > 0) check(m, 0);
+  if (check_every > 0) check(m, "before the first step");
   for (std::size_t i = 0; i < sequence.steps.size(); ++i) {
     const ExpansionStep& st = sequence.steps[i];
     bool edge_of_cluster = false;
@@ -94,9 +115,9 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
     }
     unexpanded[st.vertex] = 0;
     --cluster_left;
-    if (check_every > 0 && r.expansions % check_every == 0) check(m, i);
+    if (check_every > 0 && r.expansions % check_every == 0) check(m, "after step " + std::to_string(i));
   }
-  if (check_every > 0 && r.expansions % check_every != 0) check(m, sequence.steps.size());
+  if (check_every > 0 && r.expansions % check_every != 0) check(m, "after the last step");
   r.left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
   r.ok = r.eq1_failures == 0 && r.check_failures == 0 && r.left == 0;
   return r;
@@ -123,20 +144,14 @@ ShellingFallback shelling_fallback(const TetMesh& mesh, const ShellingOptions& o
   f.best_removed = shelling.best_removed;
   f.stopped_at_deadline = shelling.stopped_at_deadline;
   f.tets = input.num_tets();
-  const std::string tets = std::to_string(f.tets);
-  const std::string chords =
-      f.chords.empty() ? "" : " (after " + std::to_string(f.chords.size()) + " chord splits)";
   if (!shelling.found) {
-    f.message = "no shelling found in " + std::to_string(f.attempts) + " greedy attempts (at most " +
-                std::to_string(f.best_removed) + " of " + tets + " tets peeled" +
-                (f.chords.empty() ? "" : ", after " + std::to_string(f.chords.size()) + " chord splits") +
-                (f.stopped_at_deadline ? ", cut short" : "") + "): the input may not be shellable";
+    f.message = fallback_message(f);
     return f;
   }
   const ShellingExpansion sequence = shelling_to_expansion_sequence(input, shelling.order);
   if (!sequence.ok) {
-    f.message =
-        "a shelling of the " + tets + " tets was found, but Alg. 2 could not convert it: " + sequence.message;
+    f.message = "a shelling of the " + std::to_string(f.tets) +
+                " tets was found, but Alg. 2 could not convert it: " + sequence.message;
     return f;
   }
   f.replayed = true;
@@ -148,19 +163,7 @@ ShellingFallback shelling_fallback(const TetMesh& mesh, const ShellingOptions& o
     if (f.replay.step_expanded[i] && f.steps[i].vertex >= first_chord && f.steps[i].vertex < past_chords)
       ++f.chord_expansions;
   f.replay.input_expansions -= f.chord_expansions;
-  const std::string found = "a shelling of the " + tets + " tets" + chords + " found in " +
-                            std::to_string(f.attempts) +
-                            (f.attempts == 1 ? " greedy attempt" : " greedy attempts");
-  if (f.replay.ok)
-    f.message =
-        found +
-        "; Alg. 2 replayed from the start with the boundary in place expands every interior vertex (" +
-        std::to_string(f.replay.expansions) + " expansions, " + std::to_string(f.replay.cluster_splits) +
-        " of them split vertices)";
-  else
-    f.message = found + ", but its replay failed: " +
-                (f.replay.first_failure.empty() ? std::to_string(f.replay.left) + " cluster vertices left"
-                                                : f.replay.first_failure);
+  f.message = fallback_message(f);
   return f;
 }
 
