@@ -75,6 +75,8 @@ class ClusterExpander {
   ExpansionOutcome stall() const;
   // `end` (a stall, or every candidate failed) when no other order escapes it.
   std::optional<ExpansionOutcome> nobuenoss_ahead(ExpansionOutcome end) const;
+  // `end` once nobuenoss_ahead found that some order escapes it: says the failure is geometric.
+  static ExpansionOutcome refinement_failed(ExpansionOutcome end);
   std::optional<ExpansionOutcome> check_limits() const;
   ExpansionOutcome stuck() const;
   ExpansionOutcome nobuenoss_now() const;  // no cluster vertex satisfies Eq. (1)

@@ -82,6 +82,14 @@ std::optional<ExpansionOutcome> ClusterExpander::nobuenoss_ahead(ExpansionOutcom
   return out;
 }
 
+ExpansionOutcome ClusterExpander::refinement_failed(ExpansionOutcome end) {
+  end.message +=
+      "; not a NOBUENOSS: topological expansion from the cluster mesh left completes in the default order or "
+      "one of random:1..3, so the refinement failed where the topology allows progress (docs/algorithm/"
+      "expansion.md)";
+  return end;
+}
+
 bool ClusterExpander::runaway() {
   if (!watch_runaway_) return false;
   if (!checkpoint_ || 2 * cluster_ <= checkpoint_->cluster) {

@@ -54,7 +54,7 @@ ExpansionOutcome ClusterExpander::run() {
       if (failures_ == 0) return stuck();
       if (aggressive_) {
         if (auto doomed = nobuenoss_ahead(stuck())) return *doomed;
-        if (s_.shelled != ShelledMode::when_stuck || shelling_round_) return stuck();
+        if (s_.shelled != ShelledMode::when_stuck || shelling_round_) return refinement_failed(stuck());
         shelling_round_ = true;  // the last round: the shelling star-shapification as well
         for (VertexId v{0}; v < e_.num_vertices(); ++v)
           if (e_.unexpanded[v]) queue_.mark(v);
@@ -89,7 +89,7 @@ ExpansionOutcome ClusterExpander::run() {
     // while the bits grow.
     if (s_.max_restarts > 0 && stalled()) {
       if (auto doomed = nobuenoss_ahead(stall())) return *doomed;
-      return watch_runaway_ ? ran_away() : stall();
+      return watch_runaway_ ? ran_away() : refinement_failed(stall());
     }
     if (s_.max_restarts > 0 && stall_check_due())
       if (auto doomed = nobuenoss_ahead(stall())) return *doomed;

@@ -164,3 +164,21 @@ TEST_CASE("after a runaway restart the loop smooths, and Rudin's ball maps onto 
   CHECK(r.stats.expansion_restarts >= 1);
   CHECK(r.stats.smoothing_moves > 0);
 }
+
+TEST_CASE("a run that stalls where the topology allows progress says it is not a NOBUENOSS") {
+  // Rudin's ball onto a star with the shelling star-shapification as first resort (a test mode)
+  // stalls after its restarts; topological expansion from the cluster mesh left completes, so
+  // the message says the refinement failed, and the report does not claim a NOBUENOSS.
+  const alg::MapProblem p = combinatorial_problem(cmx::test::rudin_ball(), cmx::generators::BoundaryShape::star);
+  alg::MapOptions o;
+  o.combinatorial = true;
+  o.shelled = alg::ShelledMode::first;
+  o.time_limit_seconds = 600;  // a bound for the test only
+  const alg::MapResult r = alg::map_to_domain(p, o);
+  INFO(r.message);
+  REQUIRE(r.outcome == alg::MapOutcome::stuck);
+  CHECK(r.message.find("stalled: ") != std::string::npos);
+  CHECK(r.message.find("not a NOBUENOSS: topological expansion from the cluster mesh left completes") !=
+        std::string::npos);
+  CHECK_FALSE(r.stats.nobuenoss);
+}
