@@ -1,7 +1,9 @@
-// cmx/topology.hpp: ball check, boundary faces and topological expansion over topology/.
+// cmx/topology.hpp: ball check, boundary faces, topological expansion and the shelling replay over
+// topology/.
 #include "cmx/topology.hpp"
 
 #include <optional>
+#include <utility>
 
 #include "topology/ball_check.hpp"
 #include "topology/cluster_links.hpp"
@@ -100,11 +102,11 @@ TopologicalExpansion expand_topologically(std::span<const Tet> tets, std::size_t
 ShellingReplay replay_shelling(std::span<const Tet> tets, std::size_t vertex_count, std::uint64_t seed,
                                std::size_t attempts, std::size_t check_every) {
   if (attempts == 0) throw Error("replay_shelling: attempts must be at least 1");
-  const topology::TetMesh mesh = ball_mesh("replay_shelling", tets, vertex_count);
+  topology::TetMesh mesh = ball_mesh("replay_shelling", tets, vertex_count);
   topology::ShellingOptions options;
   options.max_attempts = attempts;
   options.seed = seed;
-  const topology::ShellingFallback f = topology::shelling_fallback(mesh, options, check_every);
+  const topology::ShellingFallback f = topology::shelling_fallback(std::move(mesh), options, check_every);
   ShellingReplay out;
   out.shelling_found = f.shelling_found;
   out.attempts = f.attempts;

@@ -123,10 +123,9 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
   return r;
 }
 
-ShellingFallback shelling_fallback(const TetMesh& mesh, const ShellingOptions& options,
-                                   std::size_t check_every) {
+ShellingFallback shelling_fallback(TetMesh input, const ShellingOptions& options, std::size_t check_every) {
   ShellingFallback f;
-  TetMesh input = mesh;
+  const std::size_t input_vertices = input.num_vertices();  // the chord vertices come next
   std::vector<char> boundary = boundary_vertex_flags(input);
   std::vector<char> interior = interior_vertex_flags(input);
   ChordContext context{input, boundary, interior, [&](VertexId a, VertexId b, VertexId c) {
@@ -158,7 +157,7 @@ ShellingFallback shelling_fallback(const TetMesh& mesh, const ShellingOptions& o
   f.replay = replay_with_fixed_boundary(input, sequence, check_every);
   f.steps = sequence.steps;
   // The replay counts the chord vertices as vertices of the mesh it replays; report them apart.
-  const std::size_t first_chord = mesh.num_vertices(), past_chords = first_chord + f.chords.size();
+  const std::size_t first_chord = input_vertices, past_chords = first_chord + f.chords.size();
   for (std::size_t i = 0; i < f.steps.size(); ++i)
     if (f.replay.step_expanded[i] && f.steps[i].vertex >= first_chord && f.steps[i].vertex < past_chords)
       ++f.chord_expansions;

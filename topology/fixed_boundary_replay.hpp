@@ -89,9 +89,10 @@ struct ShellingFallback {
   std::string message;               // one sentence: what was found and how the replay ended
 };
 
-// Precondition: check_ball(input).ok. O(attempts * T log T) plus the replay.
+// Precondition: check_ball(input).ok. O(attempts * T log T) plus the replay. `input` is taken by
+// value since the chords are split in it: a caller done with its mesh moves it in.
 // check_every: as for replay_with_fixed_boundary.
-[[nodiscard]] ShellingFallback shelling_fallback(const TetMesh& input, const ShellingOptions& options = {},
+[[nodiscard]] ShellingFallback shelling_fallback(TetMesh input, const ShellingOptions& options = {},
                                                  std::size_t check_every = 0);
 
 }  // namespace cmx::topology

@@ -56,6 +56,10 @@ std::optional<Entry> CandidateQueue::pop() {
   return std::nullopt;
 }
 
+std::int64_t CandidateQueue::random_rank(VertexId v) const {
+  return std::int64_t(splitmix(order_.seed ^ splitmix(v)) >> 1);
+}
+
 // The class comes first: refinement only when no simple expansion is left, whatever the order
 // among equals (paper Sec. 4.1.2 for `priority`). A planned order comes before the class:
 // the plan's next vertex is refined before any other is expanded simply, since expanding others
@@ -64,8 +68,7 @@ std::array<std::int64_t, 4> CandidateQueue::key(Kind kind, int k, std::uint32_t 
                                                 VertexId v) const {
   if (planned_ > 0) {
     const std::int64_t r = kind == Kind::automatic || v >= planned_ ? 0 : std::int64_t(v) + 1;
-    const std::int64_t tie =
-        order_.kind == topology::ExpansionOrderKind::random ? std::int64_t(splitmix(order_.seed ^ splitmix(v)) >> 1) : v;
+    const std::int64_t tie = order_.kind == topology::ExpansionOrderKind::random ? random_rank(v) : v;
     return {r, std::int64_t(kind), 0, tie};
   }
   switch (order_.kind) {
@@ -73,7 +76,7 @@ std::array<std::int64_t, 4> CandidateQueue::key(Kind kind, int k, std::uint32_t 
     case topology::ExpansionOrderKind::index:
       return {std::int64_t(kind), 0, 0, v};
     case topology::ExpansionOrderKind::random:
-      return {std::int64_t(kind), 0, 0, std::int64_t(splitmix(order_.seed ^ splitmix(v)) >> 1)};
+      return {std::int64_t(kind), 0, 0, random_rank(v)};
     case topology::ExpansionOrderKind::priority:
       break;
   }

@@ -52,6 +52,7 @@ class CandidateQueue {
  private:
   [[nodiscard]] std::array<std::int64_t, 4> key(Kind kind, int k, std::uint32_t expanded_neighbors,
                                                 VertexId v) const;
+  [[nodiscard]] std::int64_t random_rank(VertexId v) const;  // v's place in the seeded permutation
 
   const Embedding& e_;
   topology::ExpansionOrder order_;

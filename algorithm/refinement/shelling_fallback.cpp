@@ -1,17 +1,19 @@
 #include "algorithm/refinement/shelling_fallback.hpp"
 
+#include <utility>
+
 #include "topology/fixed_boundary_replay.hpp"
 
 namespace cmx::algorithm {
 
 ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, std::size_t num_vertices,
                                       std::uint64_t seed, RunControl* control, std::size_t max_attempts) {
-  const topology::TetMesh input(num_vertices, tets);
+  topology::TetMesh input(num_vertices, tets);
   topology::ShellingOptions options;
   options.max_attempts = max_attempts;
   options.seed = seed;
   if (control) options.should_stop = [control] { return control->should_stop("shelling search"); };
-  const topology::ShellingFallback f = topology::shelling_fallback(input, options);
+  const topology::ShellingFallback f = topology::shelling_fallback(std::move(input), options);
   ShellingVerdict v;
   v.found = f.shelling_found;
   v.attempts = f.attempts;
