@@ -122,6 +122,7 @@ ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_poin
   settings.collapse_after_refinement = options.collapse_refinement;
   settings.shelled = options.shelled;
   settings.subcluster_size = options.subclusters;
+  settings.before_fallback = options.before_fallback;
   settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior
   settings.input_vertices = input_vertices;
   settings.vertex_budget = std::max(tuning::vertex_budget_floor, tuning::vertex_budget_per_input_vertex * input_vertices);

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "algorithm/embedding.hpp"
 #include "algorithm/doubles/double_output.hpp"
 #include "algorithm/map_error.hpp"
 #include "algorithm/expansion/placement.hpp"
@@ -110,6 +111,10 @@ struct MapOptions {
   // Called after every expansion when set (costs a pass over vertices and tets per row). A local
   // repair calls it after all stars are mapped, star by star, so the rows do not depend on threads.
   std::function<void(const TraceRow&)> trace;
+  // Called with the state and the vertex just before the shelling star-shapification tries a
+  // cluster vertex on which bends and pushes failed (`shelled`): how the project keeps such
+  // states as test data (tests/data/fallback_bases/). Not called in a local repair's stars.
+  std::function<void(const Embedding&, topology::VertexId)> before_fallback;
   InitialMapKind init = InitialMapKind::shrink;
   // Local repair only: the shares of the tets above which `automatic` gives the stars up for the
   // global method (stars holding more than star_max_share of them; an initial map with more than

@@ -60,6 +60,7 @@ class ClusterExpander {
         guess_wrong_(e.properties.make<char>(e.num_vertices(), 0)) {}
 
   ExpansionOutcome run();
+  bool refine_by(VertexId v, RefinementStep step);  // cluster_expansion.hpp
   // After run() returned a runaway: the state to go back to.
   std::optional<Checkpoint> take_checkpoint() { return std::move(checkpoint_); }
 
@@ -169,6 +170,7 @@ class ClusterExpander {
     VertexId vertex{0}, added{0};
   };
   bool shelled_star_shapify(VertexId v, int k, int depth);
+  bool fallback(VertexId v, int k, int depth);  // shelled_star_shapify after bends and pushes
   bool push_along_shelling(VertexId v, VertexId w, std::vector<ShellingEdit>& edits);
   bool push_greedily_onto_star(VertexId v, VertexId w, std::vector<ShellingEdit>& edits);
   bool try_push(VertexId v, VertexId x, const std::unordered_set<VertexId>& fan, std::vector<ShellingEdit>& edits);

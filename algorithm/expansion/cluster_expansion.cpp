@@ -359,6 +359,11 @@ void ClusterExpander::smooth_vertex(VertexId b) {
 
 }  // namespace detail
 
+bool refine_by(Embedding& e, VertexId v, RefinementStep step, const ExpansionSettings& settings, MapStatistics& stats) {
+  detail::ClusterExpander x(e, settings, stats);
+  return x.refine_by(v, step);
+}
+
 ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats) {
   ExpansionSettings s = settings;
   if (s.order.kind == topology::ExpansionOrderKind::strict_index) s.planned_vertices = e.num_vertices();

@@ -58,6 +58,9 @@ struct ExpansionSettings {
   std::size_t subcluster_size = 4;        // largest subcluster tried (< 2: off; MapOptions::subclusters)
   // Runaway restarts (below): how many, at most; 0 turns the detection off.
   std::size_t max_restarts = 8;
+  // MapOptions::before_fallback: called with the state and v just before the shelling
+  // star-shapification tries v after bends and pushes failed on it.
+  std::function<void(const Embedding&, VertexId)> before_fallback;
 };
 
 struct ExpansionOutcome {
@@ -89,5 +92,18 @@ struct ExpansionOutcome {
 // star-shapification that is), and the output stays deterministic (the restarts are too).
 
 ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats);
+
+// One step of the loop's refinement, on its own, for cluster vertex v of a valid state (every
+// invariant of verify/invariants.hpp holds): the bends (bend_and_expand), the pushes of
+// star-shapification (star_shapify, without dangling leaves), the fallback star-shapification
+// by shelling (shelled_star_shapify), or the whole refinement (refine_and_expand: relaxation,
+// inflation, then the others), each as the loop calls it, except that the vertices the first
+// three push stay in the cluster instead of being refined in turn. True when v was
+// expanded. Either way every invariant still holds after it (what the step changed is valid;
+// a failed step may keep valid edits, as in the loop). For tests on given states: the loop
+// itself never calls this.
+enum class RefinementStep : std::uint8_t { bends, pushes, shelling, all };
+bool refine_by(Embedding& e, VertexId v, RefinementStep step, const ExpansionSettings& settings,
+               MapStatistics& stats);
 
 }  // namespace cmx::algorithm

@@ -159,13 +159,37 @@ bool ClusterExpander::refine_and_expand(VertexId v, int depth) {
   if (s_.shelled == ShelledMode::first && shelled_star_shapify(v, st.manifold_k, depth)) return true;
   if (bend_and_expand(v, st.manifold_k)) return true;  // line 10, then 11
   if (star_shapify(v, st.manifold_k, depth, false)) return true;
-  if (s_.shelled == ShelledMode::after_pushes && shelled_star_shapify(v, st.manifold_k, depth)) return true;
+  if (s_.shelled == ShelledMode::after_pushes && fallback(v, st.manifold_k, depth)) return true;
   if (!aggressive_ || depth > 0) return false;
   if (star_shapify(v, st.manifold_k, depth, true)) return true;
   // Line 9 as the paper does it (Sec. 4.2.1: split around the base's cut vertices).
   if (paper_inflate(v, depth) && (!e_.unexpanded[v] || try_simple(v, st.manifold_k))) return true;
   if (!e_.unexpanded[v]) return true;
-  return shelling_round_ && shelled_star_shapify(v, st.manifold_k, depth);  // the fallback
+  return shelling_round_ && fallback(v, st.manifold_k, depth);
+}
+
+// A step at the last depth, so that what it pushes is left in the cluster.
+bool ClusterExpander::refine_by(VertexId v, RefinementStep step) {
+  for (VertexId u{0}; u < e_.num_vertices(); ++u) cluster_ += e_.unexpanded[u] ? 1 : 0;
+  const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
+  if (!e_.unexpanded[v] || !st.expandable) return false;
+  switch (step) {
+    case RefinementStep::bends:
+      return bend_and_expand(v, st.manifold_k);
+    case RefinementStep::pushes:
+      return star_shapify(v, st.manifold_k, max_depth - 1, false);
+    case RefinementStep::shelling:
+      return shelled_star_shapify(v, st.manifold_k, max_depth - 1);
+    case RefinementStep::all:
+      return refine_and_expand(v, 0);
+  }
+  return false;
+}
+
+// The fallback after bends and pushes failed, announced to ExpansionSettings::before_fallback.
+bool ClusterExpander::fallback(VertexId v, int k, int depth) {
+  if (s_.before_fallback) s_.before_fallback(e_, v);
+  return shelled_star_shapify(v, k, depth);
 }
 
 }  // namespace cmx::algorithm::detail

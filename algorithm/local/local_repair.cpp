@@ -84,6 +84,7 @@ MapOptions star_options(const MapOptions& options, std::mutex& lock, RunControl&
     return control.should_stop("stars");
   };
   o.trace = nullptr;
+  o.before_fallback = nullptr;  // stars run in threads; the hook is for a single global run
   if (options.trace)
     o.trace = [&run, index](const TraceRow& row) {
       TraceRow r = row;
