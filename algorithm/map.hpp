@@ -173,6 +173,7 @@ struct MapStatistics {
   std::size_t relaxations = 0;                // expanded vertices re-centred in their star's kernel
   std::size_t smoothing_moves = 0;            // Laplacian moves kept (paper Sec. 4.2.4)
   std::size_t inflation_splits = 0;
+  std::size_t isolated_inflations = 0;        // of those, at a base without edges (inflate_isolated)
   std::size_t collapsed = 0;                  // added vertices collapsed away at the end (merges included)
   std::size_t merged = 0;                     // of those, removed by merges and the collapses they enabled (merge_pass.hpp)
   std::size_t relocating_collapses = 0;       // of those, collapses that moved other added vertices (relocating_collapse.hpp)

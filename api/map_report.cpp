@@ -72,7 +72,7 @@ JsonObject expansion_json(const algorithm::MapStatistics& s) {
   ex.obj("k_manifold", km);
   ex.num("smoothing_moves", n(s.smoothing_moves));
   ex.num("bends", n(s.bends)).num("relaxations", n(s.relaxations)).num("pushes", n(s.pushes));
-  ex.num("inflation_splits", n(s.inflation_splits));
+  ex.num("inflation_splits", n(s.inflation_splits)).num("isolated_inflations", n(s.isolated_inflations));
   ex.num("shelled", n(s.shelled_star_shapifications)).num("base_edge_splits", n(s.base_edge_splits));
   ex.num("shelled_pushes", n(s.shelled_pushes)).num("shelled_pushes_left", n(s.shelled_pushes_left));
   add_collapse_counts(ex, s);

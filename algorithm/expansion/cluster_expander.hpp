@@ -188,6 +188,13 @@ class ClusterExpander {
   // Attempts per vertex are bounded; the refinement budget bounds the total.
 
   bool inflate(VertexId v, int depth);
+  // A base without edges (isolated vertices: Eq. (1) allows a base that is one vertex b, and then
+  // none of the steps above applies, the paper's inflation included, which splits at cut
+  // vertices): the edge (b, u) to a cluster vertex u of the ring around spoke (v, b) is split at a
+  // new cluster vertex x, refined and expanded at once, after which (b, x) is a base edge of v
+  // that the inflation of dangling edges takes further. As there, an x that cannot be expanded
+  // is collapsed back into u.
+  bool inflate_isolated(VertexId v, int depth);
   bool push_until_star_shaped(VertexId v, int k);
   bool paper_inflate(VertexId v, int depth);
   bool isolate(VertexId x);

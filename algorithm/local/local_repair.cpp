@@ -165,6 +165,7 @@ void add_counts(MapStatistics& into, const MapStatistics& s) {
                       {&into.shelled_pushes, s.shelled_pushes},
                       {&into.shelled_pushes_left, s.shelled_pushes_left},
                       {&into.smoothing_moves, s.smoothing_moves}, {&into.inflation_splits, s.inflation_splits},
+                      {&into.isolated_inflations, s.isolated_inflations},
                       {&into.collapsed, s.collapsed}, {&into.merged, s.merged},
                       {&into.relocating_collapses, s.relocating_collapses}, {&into.flip_collapses, s.flip_collapses},
                       {&into.refinement_collapses, s.refinement_collapses},
