@@ -53,6 +53,18 @@ Stepped step(const cmx::test::FallbackBase& b, alg::RefinementStep s) {
   return out;
 }
 
+// A kept base, checked to be what the data says: a valid state of the method (every invariant),
+// v a cluster vertex that satisfies Eq. (1), on which bends and pushes fail.
+cmx::test::FallbackBase read_checked(const std::string& name) {
+  cmx::test::FallbackBase b = cmx::test::read_fallback_base(data_dir + "/" + name);
+  REQUIRE(alg::check_invariants(b.state, cmx::test::prescribed_of(b.state)).empty());
+  REQUIRE(b.state.unexpanded[b.v]);
+  REQUIRE(satisfies_eq1(b.state, b.v));
+  CHECK_FALSE(step(b, alg::RefinementStep::bends).expanded);
+  CHECK_FALSE(step(b, alg::RefinementStep::pushes).expanded);
+  return b;
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -62,13 +74,7 @@ TEST_CASE(
   REQUIRE(names.size() >= 6);
   for (const std::string& name : names) {
     CAPTURE(name);
-    const cmx::test::FallbackBase b = cmx::test::read_fallback_base(data_dir + "/" + name);
-    // The base is a valid state of the method, and v is a candidate (Eq. (1)) that needs refinement.
-    REQUIRE(alg::check_invariants(b.state, cmx::test::prescribed_of(b.state)).empty());
-    REQUIRE(b.state.unexpanded[b.v]);
-    REQUIRE(satisfies_eq1(b.state, b.v));
-    CHECK_FALSE(step(b, alg::RefinementStep::bends).expanded);
-    CHECK_FALSE(step(b, alg::RefinementStep::pushes).expanded);
+    const cmx::test::FallbackBase b = read_checked(name);
     const Stepped shelled = step(b, alg::RefinementStep::shelling);
     CHECK(shelled.expanded);
     CHECK(shelled.stats.shelled_star_shapifications == 1);
@@ -95,14 +101,10 @@ TEST_CASE("a base that is one vertex: no step applied, the inflation of an isola
   REQUIRE(names.size() >= 1);
   for (const std::string& name : names) {
     CAPTURE(name);
-    const cmx::test::FallbackBase b = cmx::test::read_fallback_base(data_dir + "/" + name);
-    REQUIRE(alg::check_invariants(b.state, cmx::test::prescribed_of(b.state)).empty());
-    REQUIRE(satisfies_eq1(b.state, b.v));
+    const cmx::test::FallbackBase b = read_checked(name);
     const alg::ConeBase base = alg::cone_base(b.state, b.v);
     CHECK(base.verts.size() == 1);
     CHECK(base.adj.empty());
-    CHECK_FALSE(step(b, alg::RefinementStep::bends).expanded);
-    CHECK_FALSE(step(b, alg::RefinementStep::pushes).expanded);
     CHECK_FALSE(step(b, alg::RefinementStep::shelling).expanded);
     const Stepped inflated = step(b, alg::RefinementStep::all);
     CHECK(inflated.expanded);
