@@ -220,21 +220,25 @@ bool ClusterExpander::inflate_isolated(VertexId v, int depth) {
   const ConeBase base = cone_base(e_, v);
   if (!base.adj.empty() || base.verts.empty()) return false;
   if (depth + 1 >= max_depth || ++inflations_[v] > 4) return false;
-  for (VertexId b : base.verts)
+  for (VertexId b : base.verts) {
+    std::vector<VertexId> ring;  // the cluster vertices around spoke (v, b), each tried once
     for (const auto& [p, q] : spoke_ring(e_, v, b))
-      for (VertexId u : {p, q}) {
-        if (!e_.unexpanded[v]) return true;  // expanded after all, by a deeper refinement
-        if (!e_.unexpanded[u] || topology::tets_around_edge(e_.mesh, u, b).empty()) continue;
-        const VertexId x = push(u, b);
-        if (refine_and_expand(x, depth + 1)) {
-          ++stats_.inflation_splits;
-          ++stats_.isolated_inflations;
-          queue_.mark(v);
-          return true;
-        }
-        if (!e_.unexpanded[x]) return true;
-        undo_push(u, x);
+      for (VertexId u : {p, q})
+        if (e_.unexpanded[u] && std::find(ring.begin(), ring.end(), u) == ring.end()) ring.push_back(u);
+    for (VertexId u : ring) {
+      if (!e_.unexpanded[v]) return true;  // expanded after all, by a deeper refinement
+      if (!e_.unexpanded[u] || topology::tets_around_edge(e_.mesh, u, b).empty()) continue;
+      const VertexId x = push(u, b);
+      if (refine_and_expand(x, depth + 1)) {
+        ++stats_.inflation_splits;
+        ++stats_.isolated_inflations;
+        queue_.mark(v);
+        return true;
       }
+      if (!e_.unexpanded[x]) return true;
+      undo_push(u, x);
+    }
+  }
   return !e_.unexpanded[v];
 }
 
