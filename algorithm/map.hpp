@@ -113,7 +113,8 @@ struct MapOptions {
   std::function<void(const TraceRow&)> trace;
   // Called with the state and the vertex just before the shelling star-shapification tries a
   // cluster vertex on which bends and pushes failed (`shelled`): how the project keeps such
-  // states as test data (tests/data/fallback_bases/). Not called in a local repair's stars.
+  // states as test data (tests/algorithm/fallback_bases/). Not called in a local repair's stars
+  // (they run on threads); a re-map from the doubles (remap_doubles.hpp) passes it on.
   std::function<void(const Embedding&, topology::VertexId)> before_fallback;
   InitialMapKind init = InitialMapKind::shrink;
   // Local repair only: the shares of the tets above which `automatic` gives the stars up for the
