@@ -97,8 +97,8 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
 // invariant of verify/invariants.hpp holds): the bends (bend_and_expand), the pushes of
 // star-shapification (star_shapify, without dangling leaves), the fallback star-shapification
 // by shelling (shelled_star_shapify), or the whole refinement (refine_and_expand: relaxation,
-// inflation, then the others), each as the loop calls it, except that the vertices the first
-// three push stay in the cluster instead of being refined in turn. True when v was
+// inflation, then the others), each as the loop calls it, except that the vertices that the
+// pushes and the fallback push stay in the cluster instead of being refined in turn. True when v was
 // expanded. Either way every invariant still holds after it (what the step changed is valid;
 // a failed step may keep valid edits, as in the loop). For tests on given states: the loop
 // itself never calls this.

@@ -152,9 +152,7 @@ bool ClusterExpander::refine_and_expand(VertexId v, int depth) {
   if (!st.expandable) return false;
   if (try_simple(v, st.manifold_k)) return true;
   if (depth == 0 && relax_base(v) && try_simple(v, st.manifold_k)) return true;
-  if (inflate_isolated(v, depth)) {  // line 9 for a base without edges
-    if (!e_.unexpanded[v]) return true;
-  }
+  if (inflate_isolated(v, depth) && !e_.unexpanded[v]) return true;  // line 9, a base without edges
   if (has_dangling_edge(cone_base(e_, v))) {  // line 9
     if (!inflate(v, depth) || !e_.unexpanded[v]) return !e_.unexpanded[v];
     if (try_simple(v, st.manifold_k)) return true;
