@@ -112,3 +112,40 @@ TEST_CASE("a base that is one vertex: no step applied, the inflation of an isola
     CHECK(alg::check_invariants(inflated.state, cmx::test::prescribed_of(b.state)) == "");
   }
 }
+
+TEST_CASE(
+    "fallback bases: after the fallback, the refinement of the pushed vertices expands every one of them") {
+  // The contraction of the predecessor's star-shapification, in cmx's terms: the vertices the
+  // fallback pushed into the cluster, last pushed first, each refined as the loop refines a
+  // candidate (refine_by, the whole refinement), in passes until one expands none. On these bases
+  // every pushed vertex is expanded, nothing the refinement adds is left in the cluster, and every
+  // invariant holds after each expansion. (Inside the loop the contraction is one pass at the
+  // next depth, which has fewer steps, and can leave some to the queue: `shelled_pushes_left`,
+  // docs/algorithm/expansion.md, "What is not proved".)
+  for (const std::string& name : bases(false)) {
+    CAPTURE(name);
+    const cmx::test::FallbackBase b = read_checked(name);
+    Stepped s = step(b, alg::RefinementStep::shelling);
+    REQUIRE(s.expanded);
+    const std::size_t first_new = b.state.num_vertices();
+    std::vector<cmx::topology::VertexId> pushed;  // last pushed first
+    for (std::size_t i = s.state.num_vertices(); i-- > first_new;)
+      if (s.state.unexpanded[i]) pushed.push_back(cmx::topology::VertexId{static_cast<std::uint32_t>(i)});
+    REQUIRE(pushed.size() == s.stats.shelled_pushes);
+    const std::size_t before_contraction = s.state.num_vertices();
+    for (bool progress = true; progress;) {
+      progress = false;
+      for (cmx::topology::VertexId c : pushed) {
+        if (!s.state.unexpanded[c]) continue;
+        const alg::ExpansionSettings settings;
+        alg::MapStatistics stats;
+        if (!alg::refine_by(s.state, c, alg::RefinementStep::all, settings, stats)) continue;
+        progress = true;
+        CHECK(alg::check_invariants(s.state, cmx::test::prescribed_of(s.state)) == "");
+      }
+    }
+    for (cmx::topology::VertexId c : pushed) CHECK_FALSE(s.state.unexpanded[c]);
+    for (std::size_t i = before_contraction; i < s.state.num_vertices(); ++i)
+      CHECK_FALSE(s.state.unexpanded[i]);
+  }
+}
