@@ -193,8 +193,8 @@ class ClusterExpander {
   // vertices): the edge (b, u) to a cluster vertex u of the ring around spoke (v, b) is split at a
   // new cluster vertex x, refined and expanded at once, after which (b, x) is a base edge of v
   // that the inflation of dangling edges takes further. As there, an x that cannot be expanded
-  // is collapsed back into u.
-  bool inflate_isolated(VertexId v, int depth);
+  // is collapsed back into u. Precondition: `base` is v's cone base, with vertices and no edge.
+  bool inflate_isolated(VertexId v, const ConeBase& base, int depth);
   bool push_until_star_shaped(VertexId v, int k);
   bool paper_inflate(VertexId v, int depth);
   bool isolate(VertexId x);

@@ -152,8 +152,12 @@ bool ClusterExpander::refine_and_expand(VertexId v, int depth) {
   if (!st.expandable) return false;
   if (try_simple(v, st.manifold_k)) return true;
   if (depth == 0 && relax_base(v) && try_simple(v, st.manifold_k)) return true;
-  if (inflate_isolated(v, depth) && !e_.unexpanded[v]) return true;  // line 9, a base without edges
-  if (has_dangling_edge(cone_base(e_, v))) {  // line 9
+  ConeBase base = cone_base(e_, v);
+  if (base.adj.empty() && !base.verts.empty()) {  // line 9, a base without edges
+    if (inflate_isolated(v, base, depth) && !e_.unexpanded[v]) return true;
+    base = cone_base(e_, v);  // the attempts' refinement may have kept edits
+  }
+  if (has_dangling_edge(base)) {  // line 9
     if (!inflate(v, depth) || !e_.unexpanded[v]) return !e_.unexpanded[v];
     if (try_simple(v, st.manifold_k)) return true;
   }

@@ -216,9 +216,7 @@ bool ClusterExpander::inflate(VertexId v, int depth) {
   return progress;
 }
 
-bool ClusterExpander::inflate_isolated(VertexId v, int depth) {
-  const ConeBase base = cone_base(e_, v);
-  if (!base.adj.empty() || base.verts.empty()) return false;
+bool ClusterExpander::inflate_isolated(VertexId v, const ConeBase& base, int depth) {
   if (depth + 1 >= max_depth || ++inflations_[v] > 4) return false;
   for (VertexId b : base.verts) {
     std::vector<VertexId> ring;  // the cluster vertices around spoke (v, b), each tried once
