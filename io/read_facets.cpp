@@ -45,7 +45,9 @@ class Cursor {
       }
     }
   }
+  // A whole number ending at a separator: "3.5" or "4x" is one bad token, not an id and more.
   std::uint64_t id() {
+    const std::size_t start = pos_;
     if (!std::isdigit(static_cast<unsigned char>(peek())))
       fail(ErrorKind::syntax, "a vertex id was expected, found " + found());
     std::uint64_t value = 0;
@@ -54,6 +56,8 @@ class Cursor {
       if (value > max_vertices) fail(ErrorKind::too_large, "vertex id beyond " + std::to_string(max_vertices));
       advance();
     }
+    if (!at_end() && !ends_token(peek()))
+      fail(ErrorKind::syntax, "a vertex id (a whole number) was expected, found " + token_from(start));
     return value;
   }
   void expect(char c, const char* what) {
@@ -63,10 +67,20 @@ class Cursor {
   [[nodiscard]] std::string found() const {
     if (at_end()) return "the end of the file";
     if (peek() == '\n' || peek() == '\r') return "the end of the line";
-    return quoted(data_.substr(pos_, std::min<std::size_t>(16, data_.size() - pos_)));
+    return token_from(pos_);
   }
   [[noreturn]] void fail(ErrorKind kind, const std::string& message) const {
     throw IoError(kind, file_, line_, message);
+  }
+  // The text from `start` to the next blank or line end (at most 16 characters), quoted.
+  [[nodiscard]] std::string token_from(std::size_t start) const {
+    std::size_t end = start;
+    while (end < data_.size() && end - start < 16 && !std::isspace(static_cast<unsigned char>(data_[end])))
+      ++end;
+    return quoted(data_.substr(start, std::max<std::size_t>(end - start, 1)));
+  }
+  [[nodiscard]] static bool ends_token(char c) {
+    return std::isspace(static_cast<unsigned char>(c)) || c == ',' || c == ']' || c == '#';
   }
 
  private:

@@ -49,6 +49,17 @@ TEST_CASE("malformed facet lists are refused with the kind and the line") {
   expect_io_error(read("name = [[0,1,2,3],\n\n[1,2,3,4]"), ErrorKind::syntax, 3);
 }
 
+TEST_CASE("a bad vertex id is quoted as the token it is, without the line end") {
+  const auto message = [](const std::string& s) {
+    return std::string(expect_io_error([s] { read_facet_list(s, "bad.facets"); }, ErrorKind::syntax, 1).what());
+  };
+  CHECK(message("1 2 3 4.5\n").find("found '4.5'") != std::string::npos);  // not "more ids on the line"
+  CHECK(message("1 2 3 4x 5\n").find("found '4x'") != std::string::npos);
+  CHECK(message("[[0,1,2,3e0]]").find("found '3e0]]'") != std::string::npos);
+  CHECK(message("1 2 3 x\n").find("found 'x'") != std::string::npos);
+  CHECK(message("1 2 3 -4\r\n").find("found '-4'") != std::string::npos);
+}
+
 TEST_CASE("a facet list file that cannot be opened is an open failure naming it") {
   const IoError e = expect_io_error([] { read_facet_list_file("/nonexistent/x.facets"); }, ErrorKind::open_failed);
   CHECK(std::string(e.what()).find("/nonexistent/x.facets") != std::string::npos);
