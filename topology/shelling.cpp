@@ -6,6 +6,8 @@
 
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
+#include "topology/shelling_counts.hpp"
+#include "topology/shelling_rule.hpp"
 
 namespace cmx::topology {
 namespace {
@@ -52,33 +54,20 @@ bool is_shelling_removable(const TetMesh& m, const TetAdjacency& adj, TetId t, c
                            std::size_t remaining_count) {
   if (!m.is_alive(t) || t >= remaining.size() || !remaining[t]) return false;
   if (remaining_count == 1) return true;
-  const std::array<bool, 4> sh = shared_faces(adj, t, remaining);
-  const int j = static_cast<int>(std::count(sh.begin(), sh.end(), true));
-  if (j == 0 || j == 4) return false;
   const Tet& x = m.tet(t);
-  // Face i contains every vertex but x[i]. A vertex x[k] lies in a free (shared) face iff some
-  // free (shared) face has i != k; an edge (x[k], x[l]) iff some such face has i != k, l.
-  for (int k = 0; k < 4; ++k) {
-    bool in_free = false, in_shared = false;
-    for (int i = 0; i < 4; ++i)
-      if (i != k) (sh[i] ? in_shared : in_free) = true;
-    if (!in_free && on_boundary_of_remaining(m, adj, remaining, x[k], invalid_vertex)) return false;
-    if (!in_shared && others_containing(m, t, remaining, x[k], invalid_vertex) > 0) return false;
-    for (int l = k + 1; l < 4; ++l) {
-      bool e_free = false, e_shared = false;
-      for (int i = 0; i < 4; ++i)
-        if (i != k && i != l) (sh[i] ? e_shared : e_free) = true;
-      if (!e_free && on_boundary_of_remaining(m, adj, remaining, x[k], x[l])) return false;
-      if (!e_shared && others_containing(m, t, remaining, x[k], x[l]) > 0) return false;
-    }
-  }
-  return true;
+  const auto second = [&](int l) { return l < 0 ? invalid_vertex : x[l]; };
+  return detail::shelling_rule(
+      shared_faces(adj, t, remaining),
+      [&](int k, int l) { return on_boundary_of_remaining(m, adj, remaining, x[k], second(l)); },
+      [&](int k, int l) { return others_containing(m, t, remaining, x[k], second(l)) > 0; });
 }
 
 ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
   ShellingResult r;
   const std::vector<TetId> live = m.live_tets();
   const TetAdjacency adj = tet_adjacency(m);
+  ShellingCounts state(m, adj);
+  std::vector<char> queued(m.tet_capacity(), 0);
   for (std::size_t attempt = 0; attempt < std::max<std::size_t>(options.max_attempts, 1); ++attempt) {
     if (attempt > 0 && options.should_stop && options.should_stop()) {
       r.stopped_at_deadline = true;
@@ -88,27 +77,33 @@ ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
     std::mt19937_64 rng(options.seed + 0x9e3779b97f4a7c15ull * attempt);
     std::vector<std::uint64_t> key(m.tet_capacity(), 0);
     for (TetId t : live) key[t] = rng();
-    std::vector<char> remaining(m.tet_capacity(), 0);
-    for (TetId t : live) remaining[t] = 1;
-    std::size_t count = live.size();
+    if (attempt > 0) state.reset();
+    std::fill(queued.begin(), queued.end(), 0);
+    // A tet is queued once: a copy pushed again would carry the same key and be popped right
+    // after the first, with nothing removed in between, so the removal order is the same.
+    const auto push = [&](auto& queue, TetId t) {
+      if (!queued[t] && state.removable(t)) {
+        queued[t] = 1;
+        queue.push({key[t], t});
+      }
+    };
     using Item = std::pair<std::uint64_t, TetId>;
     std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-    for (TetId t : live)
-      if (is_shelling_removable(m, adj, t, remaining, count)) queue.push({key[t], t});
+    for (TetId t : live) push(queue, t);
     std::vector<TetId> order;
     order.reserve(live.size());
-    while (!queue.empty() && count > 0) {
+    while (!queue.empty() && state.remaining_count() > 0) {
       const TetId t = queue.top().second;
       queue.pop();
-      if (!remaining[t] || !is_shelling_removable(m, adj, t, remaining, count)) continue;
-      remaining[t] = 0;
-      --count;
+      queued[t] = 0;
+      if (!state.removable(t)) continue;
+      state.remove(t);
       order.push_back(t);
       // Removability can change only for tets sharing a vertex with t.
       for (VertexId v : m.tet(t))
-        for (TetId o : m.tets_of(v))
-          if (remaining[o] && is_shelling_removable(m, adj, o, remaining, count)) queue.push({key[o], o});
+        for (TetId o : m.tets_of(v)) push(queue, o);
     }
+    const std::size_t count = state.remaining_count();
     r.best_removed = std::max(r.best_removed, order.size());
     if (count == 0) {
       r.found = true;

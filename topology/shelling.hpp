@@ -10,7 +10,8 @@
 // opposite the shared face to t alone, j = 2 the edge common to the two free faces.
 // find_shelling removes removable tets greedily (candidates re-checked when a neighbour goes),
 // ordered by a seeded random priority; a greedy run can get stuck on a shellable ball, so it
-// retries with new seeds. Bound: at most `max_attempts` runs, each O(T log T).
+// retries with new seeds. Bound: at most `max_attempts` runs, each O(T log T): the rule is
+// answered from counts kept per vertex and edge (topology/shelling_counts.hpp), not star walks.
 // Not finding a shelling within the bound proves nothing (the ball may still be shellable).
 
 #include <array>
