@@ -123,6 +123,11 @@ struct MapOptions {
   // stars are mapped at once (0: the machine's cores; the output is the same for every count).
   double star_max_share = 0.5;
   double star_max_defect_share = 0.05;        // automatic: defects above this share of the tets fall back at once
+  // automatic: above this predicted factorisation cost (multiply-adds) the Tutte map is first
+  // solved approximately and given up unfactorised when it folds more than twice
+  // star_max_defect_share (algorithm/tuning.hpp, tutte_screen_multiply_adds: 1e10; 0 screens
+  // every map). Changes only how soon a map that would be given up anyway is given up.
+  double tutte_screen_multiply_adds = 1e10;
   std::size_t threads = 0;
   // A ball given by its tets alone (a facet list): MapProblem::source carries no geometry (any
   // values, one per vertex). The run is a realisation of the complex: no source check (validation,

@@ -15,6 +15,17 @@ namespace cmx::algorithm::tuning {
 // factorisation always runs. The shared cases need at most 5.2e7 (moai): far below any budget.
 inline constexpr double tutte_multiply_adds_per_second = 1e9;
 
+// Above this predicted cost (about 10 s at that rate) --init auto first solves the Tutte system
+// approximately by conjugate gradients and gives the map up, without factorising, when that
+// approximate map folds more than `tutte_screen_fold_factor` times the share that gives a map up
+// (MapOptions::star_max_defect_share) in doubles. The margin keeps the decision the factorised
+// map's wherever the two could differ: folds come from the boundary's shape, not from the last
+// digits of the solve. Furch's knotted hole at S = 2 (1.17e11, 55 s to factorise) folds 24 % to
+// 37 % onto the four generated shapes; the shared cases (at most 5.2e7) are never screened.
+// The cost is MapOptions::tutte_screen_multiply_adds (its default is this constant).
+inline constexpr double tutte_screen_multiply_adds = 1e10;
+inline constexpr double tutte_screen_fold_factor = 2;
+
 // Passes of the re-map from doubles (local/remap_doubles.hpp): each maps again from the last
 // pass's doubles while the count of inverted or flat tets falls. Most maps need none, the
 // shared cases at most one; the third is a margin, each pass costs about one star map.

@@ -162,11 +162,12 @@ void add_local_options(CLI::App& app, MapArgs& a) {
              "codomain = the same from the --codomain mesh's interior positions;\n"
              "FILE = from lines 'index x y z' for every vertex; auto = tutte, or\n"
              "shrink when more than 5 % of the Tutte map's tets are inverted or\n"
-             "flat in doubles or its stars would hold more than half of the tets, and\n"
-             "after it when the stars' stitched doubles are not valid (the global map is\n"
-             "then kept if its doubles are; the report's 'local' says which ran and\n"
-             "why; --snap repair's last stage follows every init). A file named like\n"
-             "a keyword: ./auto")
+             "flat in doubles (a system costly to factorise is solved approximately\n"
+             "first and given up above 10 %) or its stars would hold more than half\n"
+             "of the tets, and after it when the stars' stitched doubles are not\n"
+             "valid (the global map is then kept if its doubles are; the report's\n"
+             "'local' says which ran and why; --snap repair's last stage follows\n"
+             "every init). A file named like a keyword: ./auto")
       ->type_name("INIT");
   add_parsed(app, "--threads", a.options.threads, [](const std::string& t) { return parse_integer(t, 0, 1024); },
              "stars mapped at once (default 0: the machine's cores); the output is\n"

@@ -1,5 +1,6 @@
 #include "algorithm/local/initial_map.hpp"
 
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -147,10 +148,36 @@ class CountedLDLT : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> {
 // Solves the Laplacian system on the interior vertices (interior[r] is row r, slot its inverse)
 // with one factorisation and three right-hand sides. False, with `why`, when the factorisation
 // or the solve fails or a value is not finite.
+// The approximate solve of TutteScreen: conjugate gradients, column by column. False when a
+// column does not reach the tolerance within the bound (then nothing is screened).
+bool solve_approximately(const Eigen::SparseMatrix<double>& laplacian, const Eigen::MatrixX3d& rhs,
+                         int max_iterations, Eigen::MatrixX3d& x) {
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
+  cg.setTolerance(1e-10);
+  cg.setMaxIterations(max_iterations);
+  cg.compute(laplacian);
+  x.resize(rhs.rows(), 3);
+  for (int k = 0; k < 3; ++k) {
+    x.col(k) = cg.solve(rhs.col(k));
+    if (cg.info() != Eigen::Success || !x.col(k).allFinite()) return false;
+  }
+  return true;
+}
+
+// The whole map with `x` for the interior rows and `prescribed` for the rest.
+std::vector<std::array<double, 3>> with_interior(const std::vector<std::array<double, 3>>& prescribed,
+                                                 const std::vector<std::uint32_t>& interior,
+                                                 const Eigen::MatrixX3d& x) {
+  std::vector<std::array<double, 3>> all = prescribed;
+  for (std::size_t r = 0; r < interior.size(); ++r)
+    for (int k = 0; k < 3; ++k) all[interior[r]][k] = x(static_cast<Eigen::Index>(r), k);
+  return all;
+}
+
 bool solve_laplacian(const EdgeAdjacency& adj, const std::vector<std::uint32_t>& interior,
                      const std::vector<std::uint32_t>& slot,
-                     const std::vector<std::array<double, 3>>& prescribed, double max_flops, Eigen::MatrixX3d& x,
-                     std::string& why) {
+                     const std::vector<std::array<double, 3>>& prescribed, double max_flops,
+                     const TutteScreen* screen, Eigen::MatrixX3d& x, std::string& why, bool& screened_out) {
   const auto m = static_cast<Eigen::Index>(interior.size());
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(adj.neighbour.size() + interior.size());
@@ -176,6 +203,14 @@ bool solve_laplacian(const EdgeAdjacency& adj, const std::vector<std::uint32_t>&
                   flops, interior.size(), max_flops);
     why = std::string("the Tutte system's sparse Cholesky factorisation would take ") + text;
     return false;
+  }
+  if (screen && screen->reject && solver.factorisation_flops() > screen->above_flops &&
+      solve_approximately(laplacian, rhs, screen->max_iterations, x)) {
+    why = screen->reject(with_interior(prescribed, interior, x));
+    if (!why.empty()) {
+      screened_out = true;
+      return false;
+    }
   }
   solver.factorize(laplacian);
   if (solver.info() != Eigen::Success) {
@@ -205,7 +240,7 @@ std::vector<char> boundary_flags(const MapProblem& p) {
 
 }  // namespace
 
-InitialMap tutte_map(const MapProblem& problem, bool exact, double max_flops) {
+InitialMap tutte_map(const MapProblem& problem, bool exact, double max_flops, const TutteScreen* screen) {
   const Clock::time_point start = Clock::now();
   std::string why = boundary_list_error(problem);
   if (why.empty()) why = tet_index_error(problem);
@@ -229,10 +264,14 @@ InitialMap tutte_map(const MapProblem& problem, bool exact, double max_flops) {
     return failed("too many interior vertices for the sparse solver: " + std::to_string(interior.size()),
                   start);
   Eigen::MatrixX3d x;
-  if (!interior.empty() && !solve_laplacian(adj, interior, slot, out.doubles, max_flops, x, why))
-    return failed(why, start);
-  for (std::size_t r = 0; r < interior.size(); ++r)
-    for (int k = 0; k < 3; ++k) out.doubles[interior[r]][k] = x(static_cast<Eigen::Index>(r), k);
+  bool screened_out = false;
+  if (!interior.empty() &&
+      !solve_laplacian(adj, interior, slot, out.doubles, max_flops, screen, x, why, screened_out)) {
+    InitialMap f = failed(why, start);
+    f.screened_out = screened_out;
+    return f;
+  }
+  out.doubles = with_interior(out.doubles, interior, x);
   out.ok = true;
   out.interior = interior.size();
   if (exact) exact_target(problem, out);

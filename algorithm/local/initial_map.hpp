@@ -3,6 +3,7 @@
 // finds the non-positive tets and re-maps only stars around them (docs/algorithm/local.md, "Initial
 // maps"). Eigen solves the Tutte system; it is included only in initial_map.cpp, never here.
 #include <array>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -22,6 +23,8 @@ struct InitialMap {
   // Why not ok (singular system, non-finite solution, ...). When ok: empty, or a note that
   // given_map set boundary vertices to their prescribed positions.
   std::string message;
+  // Not ok because TutteScreen::reject gave a reason (in `message`).
+  bool screened_out = false;
   double seconds = 0;        // time to build and solve
   std::size_t interior = 0;  // interior vertices solved for
 };
@@ -43,8 +46,22 @@ struct InitialMap {
 // much faster than the mesh (fill-in of a 3D Laplacian): when the symbolic analysis predicts more
 // than `max_flops` multiply-adds, nothing is factorised and the map is not ok, with the estimate
 // in `message`.
+//
+// `screen` (optional): when the predicted cost is above screen->above_flops, the system is first
+// solved approximately by conjugate gradients (relative residual 1e-10, at most
+// screen->max_iterations; a solve that does not get there screens nothing), and screen->reject
+// is asked about that approximate map (every vertex, boundary at its prescribed doubles). A
+// non-empty answer is the reason the map is given up before the factorisation: not ok, with the
+// reason in `message`. Otherwise the map is factorised as without the screen, so a screen that
+// rejects nothing changes no output.
+struct TutteScreen {
+  double above_flops = 0;
+  int max_iterations = 5000;
+  std::function<std::string(const std::vector<std::array<double, 3>>& approximate)> reject;
+};
 InitialMap tutte_map(const MapProblem& problem, bool exact = true,
-                     double max_flops = std::numeric_limits<double>::infinity());
+                     double max_flops = std::numeric_limits<double>::infinity(),
+                     const TutteScreen* screen = nullptr);
 
 // Fills m.target from m.doubles: interior vertices at their doubles taken exactly, boundary
 // vertices at their prescribed positions. Pre: m from tutte_map(problem, false), m.ok.

@@ -283,12 +283,27 @@ std::optional<std::vector<HPoint>> initial_target(const MapProblem& problem, con
   const double max_flops = automatic && limit > 0 && std::isfinite(limit)
                                ? tuning::tutte_multiply_adds_per_second * limit / 2
                                : std::numeric_limits<double>::infinity();
-  InitialMap m = options.init == InitialMapKind::given ? given_map(problem, problem.initial_target)
-                                                       : tutte_map(problem, !automatic, max_flops);
+  // auto: a map that an approximate solve already shows folding far too much is given up before
+  // the factorisation (tuning::tutte_screen_multiply_adds).
+  const double give_up = tuning::tutte_screen_fold_factor * options.star_max_defect_share;
+  TutteScreen screen;
+  screen.above_flops = options.tutte_screen_multiply_adds;
+  screen.reject = [&](const std::vector<std::array<double, 3>>& approximate) -> std::string {
+    const std::size_t folded = folded_in_doubles(problem.tets, approximate);
+    if (double(folded) <= give_up * double(problem.tets.size())) return {};
+    return std::to_string(folded) + " of " + std::to_string(problem.tets.size()) +
+           " tets of the Tutte map solved approximately (conjugate gradients, before a factorisation predicted "
+           "to be costly) are inverted or flat in doubles, more than " +
+           std::to_string(int(100 * give_up + 0.5)) + " %";
+  };
+  InitialMap m = options.init == InitialMapKind::given
+                     ? given_map(problem, problem.initial_target)
+                     : tutte_map(problem, !automatic, max_flops, automatic ? &screen : nullptr);
   ls.init = options.init == InitialMapKind::given ? "given" : "tutte";
   ls.seconds_init = m.seconds;
   if (!m.ok) {
-    why = "the initial map could not be made: " + m.message;
+    why = m.screened_out ? "" : "the initial map could not be made: ";
+    why += m.message;
     return std::nullopt;
   }
   if (automatic) {

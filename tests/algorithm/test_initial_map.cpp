@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -344,4 +345,46 @@ TEST_CASE("tutte_map predicts its factorisation's cost and refuses one beyond ma
   const InitialMap within = tutte_map(p, true, 1e12);
   REQUIRE(within.ok);
   CHECK(within.target == unlimited.target);
+}
+
+TEST_CASE("a Tutte screen sees the conjugate-gradient map above its cost, and only a rejection changes the result") {
+  const MapProblem p = sphere_problem(4, 3);
+  const InitialMap plain = tutte_map(p, false);
+  REQUIRE_MESSAGE(plain.ok, plain.message);
+  double extent = 0;
+  for (const auto& q : plain.doubles)
+    for (double x : q) extent = std::max(extent, std::abs(x));
+  std::size_t asked = 0;
+  double farthest = 0;
+  TutteScreen screen;
+  screen.above_flops = 0;
+  screen.reject = [&](const std::vector<std::array<double, 3>>& approximate) -> std::string {
+    ++asked;
+    REQUIRE(approximate.size() == plain.doubles.size());
+    for (std::size_t v = 0; v < approximate.size(); ++v)
+      for (int k = 0; k < 3; ++k) farthest = std::max(farthest, std::abs(approximate[v][k] - plain.doubles[v][k]));
+    return {};
+  };
+  const InitialMap kept = tutte_map(p, false, std::numeric_limits<double>::infinity(), &screen);
+  REQUIRE(kept.ok);
+  CHECK(asked == 1);
+  CHECK(farthest < 1e-8 * extent);  // the approximate solve is the map, nearly
+  CHECK(kept.doubles == plain.doubles);  // and a screen that keeps it changes nothing
+  CHECK_FALSE(kept.screened_out);
+
+  screen.reject = [](const std::vector<std::array<double, 3>>&) -> std::string { return "folds too much"; };
+  const InitialMap given_up = tutte_map(p, true, std::numeric_limits<double>::infinity(), &screen);
+  CHECK_FALSE(given_up.ok);
+  CHECK(given_up.screened_out);
+  CHECK(given_up.message == "folds too much");
+  CHECK(given_up.target.empty());
+
+  screen.above_flops = 1e12;  // below the cost only: never asked
+  asked = 0;
+  screen.reject = [&](const std::vector<std::array<double, 3>>&) -> std::string {
+    ++asked;
+    return "never";
+  };
+  CHECK(tutte_map(p, false, std::numeric_limits<double>::infinity(), &screen).ok);
+  CHECK(asked == 0);
 }

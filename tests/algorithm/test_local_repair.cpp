@@ -9,6 +9,7 @@
 
 #include "generators/domain_generators.hpp"
 #include "algorithm/map.hpp"
+#include "algorithm/tuning.hpp"
 #include "map_test_util.hpp"
 
 using namespace cmx;
@@ -174,4 +175,39 @@ TEST_CASE("auto does not start a Tutte factorisation that half the time limit ca
   CHECK(r.stats.local.fallback.find("sparse Cholesky factorisation would take about") != std::string::npos);
   CHECK(r.stats.local.fallback.find("more than the 50 allowed") != std::string::npos);
   CHECK(r.outcome == MapOutcome::time_limit);
+}
+
+TEST_CASE("auto gives up a Tutte map that an approximate solve shows folding far too much, with the same output") {
+  CHECK(MapOptions{}.tutte_screen_multiply_adds == tuning::tutte_screen_multiply_adds);
+  const MapProblem p = problem_from(voxel_ball(4, 2), "star:5");  // its Tutte map folds about a quarter
+  MapOptions o;
+  o.init = InitialMapKind::automatic;
+  o.tutte_screen_multiply_adds = 0;  // screen every map
+  const MapResult screened = map_to_domain(p, o);
+  check_verified(screened);
+  CHECK(std::string(screened.stats.local.init) == "shrink");
+  CHECK(screened.stats.local.fallback.find("solved approximately") != std::string::npos);
+  CHECK(screened.stats.local.fallback.find("more than 10 %") != std::string::npos);
+  MapOptions plain;
+  plain.init = InitialMapKind::automatic;  // far below the default cost: factorised, then given up
+  const MapResult factorised = map_to_domain(p, plain);
+  CHECK(factorised.stats.local.fallback.find("of the initial map are inverted or flat") != std::string::npos);
+  CHECK(screened.tets == factorised.tets);
+  CHECK(screened.target == factorised.target);
+}
+
+TEST_CASE("a Tutte map that folds little passes the screen and is repaired as without it") {
+  const MapProblem p = identity_problem(perturbed_grid(6, 6, 6, 3));  // its own box: few folds
+  MapOptions o;
+  o.init = InitialMapKind::automatic;
+  o.tutte_screen_multiply_adds = 0;
+  const MapResult screened = map_to_domain(p, o);
+  check_verified(screened);
+  CHECK(std::string(screened.stats.local.init) == "tutte");
+  MapOptions plain;
+  plain.init = InitialMapKind::automatic;
+  const MapResult factorised = map_to_domain(p, plain);
+  CHECK(std::string(factorised.stats.local.init) == "tutte");
+  CHECK(screened.tets == factorised.tets);
+  CHECK(screened.target == factorised.target);
 }
