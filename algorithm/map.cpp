@@ -173,10 +173,10 @@ void merge(Embedding& e, const MapOptions& options, RunControl& control, MapStat
 
 // After a NOBUENOSS: the shelling search that the fallback of paper Sec. 4.3 starts with
 // (shelling_fallback.hpp). Its verdict completes the stuck message; the outcome stays stuck.
-void search_fallback(const MapProblem& problem, RunControl& control, MapResult& r) {
+void search_fallback(const MapProblem& problem, std::size_t threads, RunControl& control, MapResult& r) {
   const auto phase = Clock::now();
   control.report("shelling search", 0);
-  const ShellingVerdict v = search_input_shelling(problem.tets, problem.source.size(), 1, &control);
+  const ShellingVerdict v = search_input_shelling(problem.tets, problem.source.size(), 1, &control, 8, threads);
   MapStatistics& s = r.stats;
   s.seconds_shelling_search = seconds_since(phase);
   s.nobuenoss = true;
@@ -204,7 +204,7 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
   s.seconds_expand = seconds_since(phase);
   r.outcome = out.outcome;
   r.message = out.message;
-  if (out.nobuenoss) search_fallback(problem, control, r);
+  if (out.nobuenoss) search_fallback(problem, options.threads, control, r);
   if (out.outcome == MapOutcome::success && options.collapse) {
     phase = Clock::now();
     control.report("collapse", 0);

@@ -170,8 +170,8 @@ void add_local_options(CLI::App& app, MapArgs& a) {
              "every init). A file named like a keyword: ./auto")
       ->type_name("INIT");
   add_parsed(app, "--threads", a.options.threads, [](const std::string& t) { return parse_integer(t, 0, 1024); },
-             "stars mapped at once (default 0: the machine's cores); the output is\n"
-             "the same for every count")
+             "stars mapped at once, and greedy shelling attempts after a NOBUENOSS\n"
+             "(default 0: the machine's cores); the output is the same for every count")
       ->type_name("N");
 }
 

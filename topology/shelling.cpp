@@ -1,8 +1,10 @@
 #include "topology/shelling.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <queue>
 #include <random>
+#include <thread>
 
 #include "topology/complex_queries.hpp"
 #include "topology/mesh_edits.hpp"
@@ -62,54 +64,84 @@ bool is_shelling_removable(const TetMesh& m, const TetAdjacency& adj, TetId t, c
       [&](int k, int l) { return others_containing(m, t, remaining, x[k], second(l)) > 0; });
 }
 
+namespace {
+
+// One greedy attempt from `state` (every tet remaining): the removal order it reached.
+std::vector<TetId> greedy_attempt(const TetMesh& m, const std::vector<TetId>& live, std::uint64_t seed,
+                                  ShellingCounts& state) {
+  std::mt19937_64 rng(seed);
+  std::vector<std::uint64_t> key(m.tet_capacity(), 0);
+  for (TetId t : live) key[t] = rng();
+  std::vector<char> queued(m.tet_capacity(), 0);
+  using Item = std::pair<std::uint64_t, TetId>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  // A tet is queued once: a copy pushed again would carry the same key and be popped right
+  // after the first, with nothing removed in between, so the removal order is the same.
+  const auto push = [&](TetId t) {
+    if (!queued[t] && state.removable(t)) {
+      queued[t] = 1;
+      queue.push({key[t], t});
+    }
+  };
+  for (TetId t : live) push(t);
+  std::vector<TetId> order;
+  order.reserve(live.size());
+  while (!queue.empty() && state.remaining_count() > 0) {
+    const TetId t = queue.top().second;
+    queue.pop();
+    queued[t] = 0;
+    if (!state.removable(t)) continue;
+    state.remove(t);
+    order.push_back(t);
+    // Removability can change only for tets sharing a vertex with t.
+    for (VertexId v : m.tet(t))
+      for (TetId o : m.tets_of(v)) push(o);
+  }
+  return order;
+}
+
+}  // namespace
+
 ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
   ShellingResult r;
   const std::vector<TetId> live = m.live_tets();
   const TetAdjacency adj = tet_adjacency(m);
-  ShellingCounts state(m, adj);
-  std::vector<char> queued(m.tet_capacity(), 0);
-  for (std::size_t attempt = 0; attempt < std::max<std::size_t>(options.max_attempts, 1); ++attempt) {
-    if (attempt > 0 && options.should_stop && options.should_stop()) {
+  const ShellingCounts fresh(m, adj);
+  const std::size_t attempts = std::max<std::size_t>(options.max_attempts, 1);
+  const std::size_t cores = std::max<std::size_t>(1, std::thread::hardware_concurrency());
+  const std::size_t threads = std::min(options.threads ? options.threads : cores, attempts);
+  // Attempts run in batches of `threads`, each on a copy of the fresh counts; their results are
+  // taken in attempt order, so the outcome is the one-thread outcome whatever the count.
+  for (std::size_t first = 0; first < attempts; first += threads) {
+    if (first > 0 && options.should_stop && options.should_stop()) {
       r.stopped_at_deadline = true;
       break;
     }
-    ++r.attempts;
-    std::mt19937_64 rng(options.seed + 0x9e3779b97f4a7c15ull * attempt);
-    std::vector<std::uint64_t> key(m.tet_capacity(), 0);
-    for (TetId t : live) key[t] = rng();
-    if (attempt > 0) state.reset();
-    std::fill(queued.begin(), queued.end(), 0);
-    // A tet is queued once: a copy pushed again would carry the same key and be popped right
-    // after the first, with nothing removed in between, so the removal order is the same.
-    const auto push = [&](auto& queue, TetId t) {
-      if (!queued[t] && state.removable(t)) {
-        queued[t] = 1;
-        queue.push({key[t], t});
+    const std::size_t n = std::min(threads, attempts - first);
+    std::vector<std::vector<TetId>> orders(n);
+    std::vector<std::exception_ptr> errors(n);
+    const auto run = [&](std::size_t i) {
+      try {
+        ShellingCounts state = fresh;
+        orders[i] = greedy_attempt(m, live, options.seed + 0x9e3779b97f4a7c15ull * (first + i), state);
+      } catch (...) {
+        errors[i] = std::current_exception();
       }
     };
-    using Item = std::pair<std::uint64_t, TetId>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-    for (TetId t : live) push(queue, t);
-    std::vector<TetId> order;
-    order.reserve(live.size());
-    while (!queue.empty() && state.remaining_count() > 0) {
-      const TetId t = queue.top().second;
-      queue.pop();
-      queued[t] = 0;
-      if (!state.removable(t)) continue;
-      state.remove(t);
-      order.push_back(t);
-      // Removability can change only for tets sharing a vertex with t.
-      for (VertexId v : m.tet(t))
-        for (TetId o : m.tets_of(v)) push(queue, o);
-    }
-    const std::size_t count = state.remaining_count();
-    r.best_removed = std::max(r.best_removed, order.size());
-    if (count == 0) {
-      r.found = true;
-      r.order = std::move(order);
-      r.message = "shelling found";
-      return r;
+    std::vector<std::thread> pool;
+    for (std::size_t i = 1; i < n; ++i) pool.emplace_back(run, i);
+    run(0);
+    for (std::thread& t : pool) t.join();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (errors[i]) std::rethrow_exception(errors[i]);
+      ++r.attempts;
+      r.best_removed = std::max(r.best_removed, orders[i].size());
+      if (orders[i].size() == live.size()) {
+        r.found = true;
+        r.order = std::move(orders[i]);
+        r.message = "shelling found";
+        return r;
+      }
     }
   }
   r.message = "no shelling found within " + std::to_string(r.attempts) + " greedy attempts (best removed " +

@@ -29,9 +29,12 @@ namespace cmx::topology {
 struct ShellingOptions {
   std::size_t max_attempts = 8;
   std::uint64_t seed = 1;
-  // Polled before each attempt but the first (an attempt is not cut short): once it returns
-  // true no new attempt starts. The caller's deadline, or any other reason to stop.
+  // Polled before each batch of attempts but the first (an attempt is not cut short): once it
+  // returns true no new attempt starts. The caller's deadline, or any other reason to stop.
   std::function<bool()> should_stop;
+  // Attempts run at once (0: the machine's cores; never more than max_attempts). The result is
+  // the same for every count; only how many attempts a deadline lets start can differ.
+  std::size_t threads = 1;
 };
 
 struct ShellingResult {

@@ -21,7 +21,7 @@ std::uint64_t edge_key(VertexId a, VertexId b) {
 }  // namespace
 
 ShellingCounts::ShellingCounts(const TetMesh& m, const TetAdjacency& adj)
-    : m_(m), adj_(adj), edge_of_(m.tet_capacity()), remaining_(m.tet_capacity(), 0) {
+    : m_(m), adj_(adj), remaining_(m.tet_capacity(), 0) {
   const std::vector<TetId> live = m.live_tets();
   std::vector<std::uint64_t> keys;
   keys.reserve(6 * live.size());
@@ -36,14 +36,16 @@ ShellingCounts::ShellingCounts(const TetMesh& m, const TetAdjacency& adj)
   vertex_free_.assign(m.num_vertices(), 0);
   edge_tets_.assign(keys.size(), 0);
   edge_free_.assign(keys.size(), 0);
+  auto edge_of = std::make_shared<std::vector<std::array<std::uint32_t, 6>>>(m.tet_capacity());
   for (TetId t : live) {
     const Tet& x = m.tet(t);
     for (int k = 0; k < 4; ++k)
       for (int l = k + 1; l < 4; ++l) {
         const auto e = std::lower_bound(keys.begin(), keys.end(), edge_key(x[k], x[l]));
-        edge_of_[t][pair_index(k, l)] = static_cast<std::uint32_t>(e - keys.begin());
+        (*edge_of)[t][pair_index(k, l)] = static_cast<std::uint32_t>(e - keys.begin());
       }
   }
+  edge_of_ = std::move(edge_of);
   reset();
 }
 
@@ -58,7 +60,7 @@ void ShellingCounts::reset() {
   std::fill(edge_free_.begin(), edge_free_.end(), 0);
   for (TetId t : live) {
     for (int k = 0; k < 4; ++k) ++vertex_tets_[m_.tet(t)[k]];
-    for (std::uint32_t e : edge_of_[t]) ++edge_tets_[e];
+    for (std::uint32_t e : (*edge_of_)[t]) ++edge_tets_[e];
     for (int i = 0; i < 4; ++i)
       if (!shared(t, i)) add_face(t, i, 1);
   }
@@ -76,7 +78,7 @@ void ShellingCounts::add_face(TetId t, int face, int delta) {
     if (k == face) continue;
     vertex_free_[x[k]] += delta;
     for (int l = k + 1; l < 4; ++l)
-      if (l != face) edge_free_[edge_of_[t][pair_index(k, l)]] += delta;
+      if (l != face) edge_free_[(*edge_of_)[t][pair_index(k, l)]] += delta;
   }
 }
 
@@ -92,10 +94,10 @@ bool ShellingCounts::removable(TetId t) const {
   return detail::shelling_rule(
       sh,
       [&](int k, int l) {
-        return (l < 0 ? vertex_free_[x[k]] : edge_free_[edge_of_[t][pair_index(k, l)]]) > 0;
+        return (l < 0 ? vertex_free_[x[k]] : edge_free_[(*edge_of_)[t][pair_index(k, l)]]) > 0;
       },
       [&](int k, int l) {
-        return (l < 0 ? vertex_tets_[x[k]] : edge_tets_[edge_of_[t][pair_index(k, l)]]) > 1;
+        return (l < 0 ? vertex_tets_[x[k]] : edge_tets_[(*edge_of_)[t][pair_index(k, l)]]) > 1;
       });
 }
 
@@ -103,7 +105,7 @@ bool ShellingCounts::removable(TetId t) const {
 void ShellingCounts::remove(TetId t) {
   for (int i = 0; i < 4; ++i) add_face(t, i, shared(t, i) ? 1 : -1);
   for (int k = 0; k < 4; ++k) --vertex_tets_[m_.tet(t)[k]];
-  for (std::uint32_t e : edge_of_[t]) --edge_tets_[e];
+  for (std::uint32_t e : (*edge_of_)[t]) --edge_tets_[e];
   remaining_[t] = 0;
   --count_;
 }

@@ -7,6 +7,7 @@
 // Furch's knotted hole at scale 3 (1.6M tets) that was 12 s per attempt.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "topology/complex_queries.hpp"
@@ -17,7 +18,8 @@ namespace cmx::topology {
 class ShellingCounts {
  public:
   // Every live tet of `m` remaining. `adj` = tet_adjacency(m); both must outlive this object and
-  // stay unchanged. O(T log T) (the edges are numbered by sorting).
+  // stay unchanged. O(T log T) (the edges are numbered by sorting). A copy shares the numbering
+  // (read only) and has counts of its own, so that copies can run attempts on threads.
   ShellingCounts(const TetMesh& m, const TetAdjacency& adj);
 
   // The same answer as is_shelling_removable(m, adj, t, remaining(), remaining_count()), O(1).
@@ -36,7 +38,8 @@ class ShellingCounts {
 
   const TetMesh& m_;
   const TetAdjacency& adj_;
-  std::vector<std::array<std::uint32_t, 6>> edge_of_;  // per tet slot, its edges in pair_index order
+  // Per tet slot, its edges in pair_index order.
+  std::shared_ptr<const std::vector<std::array<std::uint32_t, 6>>> edge_of_;
   std::vector<char> remaining_;
   std::size_t count_ = 0;
   std::vector<std::int32_t> vertex_tets_, vertex_free_, edge_tets_, edge_free_;

@@ -85,6 +85,7 @@ MapOptions star_options(const MapOptions& options, std::mutex& lock, RunControl&
   };
   o.trace = nullptr;
   o.before_fallback = nullptr;  // stars run in threads; the hook is for a single global run
+  o.threads = 1;                // the stars are what runs on the threads (a star's shelling search too)
   if (options.trace)
     o.trace = [&run, index](const TraceRow& row) {
       TraceRow r = row;

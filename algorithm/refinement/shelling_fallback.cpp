@@ -7,11 +7,13 @@
 namespace cmx::algorithm {
 
 ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, std::size_t num_vertices,
-                                      std::uint64_t seed, RunControl* control, std::size_t max_attempts) {
+                                      std::uint64_t seed, RunControl* control, std::size_t max_attempts,
+                                      std::size_t threads) {
   topology::TetMesh input(num_vertices, tets);
   topology::ShellingOptions options;
   options.max_attempts = max_attempts;
   options.seed = seed;
+  options.threads = threads;
   if (control) options.should_stop = [control] { return control->should_stop("shelling search"); };
   const topology::ShellingFallback f = topology::shelling_fallback(std::move(input), options);
   ShellingVerdict v;

@@ -42,7 +42,10 @@ struct ShellingVerdict {
 // starts once `control` (when given) says stop. When a shelling is found it is converted by
 // Alg. 2 and replayed topologically, and the message says why that replay is not run
 // geometrically. O(attempts * T log T) plus the replay.
+// `threads`: attempts run at once (topology::ShellingOptions::threads; 0: the machine's cores),
+// the verdict the same for every count.
 ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, std::size_t num_vertices,
-                                      std::uint64_t seed, RunControl* control, std::size_t max_attempts = 8);
+                                      std::uint64_t seed, RunControl* control, std::size_t max_attempts = 8,
+                                      std::size_t threads = 1);
 
 }  // namespace cmx::algorithm

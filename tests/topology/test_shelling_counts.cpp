@@ -115,3 +115,28 @@ TEST_CASE("find_shelling removes in the order of the greedy search written with 
   CHECK(a.best_removed == b.best_removed);
   CHECK(a.best_removed > 0);
 }
+
+TEST_CASE("find_shelling gives the same result for every thread count") {
+  const auto same = [](const ShellingResult& a, const ShellingResult& b) {
+    return a.found == b.found && a.attempts == b.attempts && a.best_removed == b.best_removed &&
+           a.order == b.order;
+  };
+  const GridComplex grid = grid_complex(3, 3, 3);
+  const GridComplex knot = knotted_hole_ball();
+  for (const TetMesh* m : {&grid.mesh, &knot.mesh})
+    for (std::uint64_t seed : {1u, 7u}) {
+      ShellingOptions o{5, seed, {}, 1};
+      const ShellingResult one = find_shelling(*m, o);
+      for (std::size_t threads : {2u, 3u, 8u}) {
+        o.threads = threads;
+        CHECK(same(find_shelling(*m, o), one));
+      }
+    }
+  // A deadline is polled between batches: with 3 at once and a stop after the first poll, the
+  // first batch of 3 attempts runs on the knotted hole, which no attempt shells.
+  std::size_t polls = 0;
+  const ShellingResult cut = find_shelling(knot.mesh, {8, 1, [&polls] { return ++polls >= 1; }, 3});
+  CHECK_FALSE(cut.found);
+  CHECK(cut.attempts == 3);
+  CHECK(cut.stopped_at_deadline);
+}
