@@ -46,18 +46,8 @@ ShellingCounts::ShellingCounts(const TetMesh& m, const TetAdjacency& adj)
       }
   }
   edge_of_ = std::move(edge_of);
-  reset();
-}
-
-void ShellingCounts::reset() {
-  const std::vector<TetId> live = m_.live_tets();
-  std::fill(remaining_.begin(), remaining_.end(), 0);
   for (TetId t : live) remaining_[t] = 1;
   count_ = live.size();
-  std::fill(vertex_tets_.begin(), vertex_tets_.end(), 0);
-  std::fill(vertex_free_.begin(), vertex_free_.end(), 0);
-  std::fill(edge_tets_.begin(), edge_tets_.end(), 0);
-  std::fill(edge_free_.begin(), edge_free_.end(), 0);
   for (TetId t : live) {
     for (int k = 0; k < 4; ++k) ++vertex_tets_[m_.tet(t)[k]];
     for (std::uint32_t e : (*edge_of_)[t]) ++edge_tets_[e];

@@ -26,8 +26,6 @@ class ShellingCounts {
   [[nodiscard]] bool removable(TetId t) const;
   // Precondition: remaining(t). O(1).
   void remove(TetId t);
-  // Every live tet remaining again, as after construction. O(T).
-  void reset();
 
   [[nodiscard]] bool remaining(TetId t) const { return remaining_[t] != 0; }
   [[nodiscard]] std::size_t remaining_count() const { return count_; }

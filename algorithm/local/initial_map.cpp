@@ -145,9 +145,6 @@ class CountedLDLT : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> {
   }
 };
 
-// Solves the Laplacian system on the interior vertices (interior[r] is row r, slot its inverse)
-// with one factorisation and three right-hand sides. False, with `why`, when the factorisation
-// or the solve fails or a value is not finite.
 // The approximate solve of TutteScreen: conjugate gradients, column by column. False when a
 // column does not reach the tolerance within the bound (then nothing is screened).
 bool solve_approximately(const Eigen::SparseMatrix<double>& laplacian, const Eigen::MatrixX3d& rhs,
@@ -164,16 +161,16 @@ bool solve_approximately(const Eigen::SparseMatrix<double>& laplacian, const Eig
   return true;
 }
 
-// The whole map with `x` for the interior rows and `prescribed` for the rest.
-std::vector<std::array<double, 3>> with_interior(const std::vector<std::array<double, 3>>& prescribed,
-                                                 const std::vector<std::uint32_t>& interior,
-                                                 const Eigen::MatrixX3d& x) {
-  std::vector<std::array<double, 3>> all = prescribed;
+// Sets the interior vertices of `map` (interior[r] is row r of `x`).
+void set_interior(std::vector<std::array<double, 3>>& map, const std::vector<std::uint32_t>& interior,
+                  const Eigen::MatrixX3d& x) {
   for (std::size_t r = 0; r < interior.size(); ++r)
-    for (int k = 0; k < 3; ++k) all[interior[r]][k] = x(static_cast<Eigen::Index>(r), k);
-  return all;
+    for (int k = 0; k < 3; ++k) map[interior[r]][k] = x(static_cast<Eigen::Index>(r), k);
 }
 
+// Solves the Laplacian system on the interior vertices (interior[r] is row r, slot its inverse)
+// with one factorisation and three right-hand sides. False, with `why`, when the factorisation
+// or the solve fails or a value is not finite, or when `screen` gives the map up (screened_out).
 bool solve_laplacian(const EdgeAdjacency& adj, const std::vector<std::uint32_t>& interior,
                      const std::vector<std::uint32_t>& slot,
                      const std::vector<std::array<double, 3>>& prescribed, double max_flops,
@@ -197,16 +194,19 @@ bool solve_laplacian(const EdgeAdjacency& adj, const std::vector<std::uint32_t>&
   laplacian.setFromTriplets(entries.begin(), entries.end());
   CountedLDLT solver;
   solver.analyzePattern(laplacian);
-  if (const double flops = solver.factorisation_flops(); flops > max_flops) {
+  const double flops = solver.factorisation_flops();
+  if (flops > max_flops) {
     char text[160];
     std::snprintf(text, sizeof text, "about %.3g multiply-adds for %zu interior vertices, more than the %.3g allowed",
                   flops, interior.size(), max_flops);
     why = std::string("the Tutte system's sparse Cholesky factorisation would take ") + text;
     return false;
   }
-  if (screen && screen->reject && solver.factorisation_flops() > screen->above_flops &&
+  if (screen && screen->reject && flops > screen->above_flops &&
       solve_approximately(laplacian, rhs, screen->max_iterations, x)) {
-    why = screen->reject(with_interior(prescribed, interior, x));
+    std::vector<std::array<double, 3>> approximate = prescribed;
+    set_interior(approximate, interior, x);
+    why = screen->reject(approximate);
     if (!why.empty()) {
       screened_out = true;
       return false;
@@ -271,7 +271,7 @@ InitialMap tutte_map(const MapProblem& problem, bool exact, double max_flops, co
     f.screened_out = screened_out;
     return f;
   }
-  out.doubles = with_interior(out.doubles, interior, x);
+  set_interior(out.doubles, interior, x);
   out.ok = true;
   out.interior = interior.size();
   if (exact) exact_target(problem, out);

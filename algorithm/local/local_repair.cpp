@@ -273,6 +273,16 @@ std::size_t folded_in_doubles(const std::vector<Tet>& tets, const std::vector<st
   return folded;
 }
 
+// Why the map `at` (named `what`) is given up: more than `share` of the tets not positive in
+// doubles. "" when it is kept.
+std::string too_folded(const std::vector<Tet>& tets, const std::vector<std::array<double, 3>>& at, double share,
+                       const char* what) {
+  const std::size_t folded = folded_in_doubles(tets, at);
+  if (double(folded) <= share * double(tets.size())) return {};
+  return std::to_string(folded) + " of " + std::to_string(tets.size()) + " tets of " + what +
+         " are inverted or flat in doubles, more than " + std::to_string(int(100 * share + 0.5)) + " %";
+}
+
 // The initial map, or nullopt with the reason in `why`. automatic: also nullopt when the Tutte
 // map folds more than star_max_defect_share of the tets in doubles. That decision needs no exact
 // signs and no rationals (the exact classification of a map that folds everywhere costs as much
@@ -286,16 +296,12 @@ std::optional<std::vector<HPoint>> initial_target(const MapProblem& problem, con
                                : std::numeric_limits<double>::infinity();
   // auto: a map that an approximate solve already shows folding far too much is given up before
   // the factorisation (tuning::tutte_screen_multiply_adds).
-  const double give_up = tuning::tutte_screen_fold_factor * options.star_max_defect_share;
   TutteScreen screen;
   screen.above_flops = options.tutte_screen_multiply_adds;
-  screen.reject = [&](const std::vector<std::array<double, 3>>& approximate) -> std::string {
-    const std::size_t folded = folded_in_doubles(problem.tets, approximate);
-    if (double(folded) <= give_up * double(problem.tets.size())) return {};
-    return std::to_string(folded) + " of " + std::to_string(problem.tets.size()) +
-           " tets of the Tutte map solved approximately (conjugate gradients, before a factorisation predicted "
-           "to be costly) are inverted or flat in doubles, more than " +
-           std::to_string(int(100 * give_up + 0.5)) + " %";
+  screen.reject = [&](const std::vector<std::array<double, 3>>& approximate) {
+    return too_folded(problem.tets, approximate, tuning::tutte_screen_fold_factor * options.star_max_defect_share,
+                      "the Tutte map solved approximately (conjugate gradients, before a factorisation predicted "
+                      "to be costly)");
   };
   InitialMap m = options.init == InitialMapKind::given
                      ? given_map(problem, problem.initial_target)
@@ -308,13 +314,8 @@ std::optional<std::vector<HPoint>> initial_target(const MapProblem& problem, con
     return std::nullopt;
   }
   if (automatic) {
-    const std::size_t folded = folded_in_doubles(problem.tets, m.doubles);
-    if (double(folded) > options.star_max_defect_share * double(problem.tets.size())) {
-      why = std::to_string(folded) + " of " + std::to_string(problem.tets.size()) +
-            " tets of the initial map are inverted or flat in doubles, more than " +
-            std::to_string(int(100 * options.star_max_defect_share + 0.5)) + " %";
-      return std::nullopt;
-    }
+    why = too_folded(problem.tets, m.doubles, options.star_max_defect_share, "the initial map");
+    if (!why.empty()) return std::nullopt;
     exact_target(problem, m);
   }
   std::vector<HPoint> target;
