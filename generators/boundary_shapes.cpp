@@ -48,9 +48,12 @@ EdgeWeights uniform_weights(const Surface& s) {
 //   (sum_u w_vu) x_v - sum_{free u ~ v} w_vu x_u = sum_{fixed u ~ v} w_vu p_u,
 // for the three coordinates, by conjugate gradients with the Jacobi preconditioner. The matrix is
 // symmetric positive definite because the weights are symmetric and positive and the group
-// touches a fixed vertex.
-void solve_tutte_group(const Surface& s, const EdgeWeights& weight, bool uniform, const std::vector<std::uint32_t>& group,
-                       const std::vector<std::uint32_t>& slot, const std::vector<char>& fixed, std::vector<Vec3>& pos) {
+// touches a fixed vertex. False when some coordinate stopped at the iteration bound short of the
+// tolerance (or on a direction of no descent): the weights then span more than conjugate
+// gradients in doubles resolve, and the positions are whatever the last iterate was.
+bool solve_tutte_group(const Surface& s, const EdgeWeights& weight, bool uniform,
+                       const std::vector<std::uint32_t>& group, const std::vector<std::uint32_t>& slot,
+                       const std::vector<char>& fixed, std::vector<Vec3>& pos) {
   const std::size_t n = group.size();
   std::vector<double> diag(n), b(n), x(n), r(n), z(n), p(n), ap(n);
   const auto apply = [&](const std::vector<double>& in, std::vector<double>& out) {
@@ -72,6 +75,7 @@ void solve_tutte_group(const Surface& s, const EdgeWeights& weight, bool uniform
     for (double w : weight[group[i]]) diag[i] += w;
   }
   const std::size_t max_iterations = 10 * n + 100;
+  bool converged = true;
   for (int axis = 0; axis < 3; ++axis) {
     for (std::size_t i = 0; i < n; ++i) {
       double sum = 0;
@@ -113,17 +117,26 @@ void solve_tutte_group(const Surface& s, const EdgeWeights& weight, bool uniform
       rz = rz_next;
       for (std::size_t i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
     }
+    if (!(scaled_residual() <= tolerance)) converged = false;
     for (std::size_t i = 0; i < n; ++i) pos[group[i]][std::size_t(axis)] = x[i];
   }
+  return converged;
 }
 
-// Places every free vertex by a Tutte embedding with the given weights; false when a group of
-// free vertices touches no fixed vertex (cannot happen on a connected surface with a fixed vertex).
-bool place_free_vertices(const Surface& s, const EdgeWeights& weight, bool uniform, const std::vector<char>& fixed,
-                         std::vector<Vec3>& pos) {
+enum class Placement {
+  solved,
+  unresolved,     // some group's solve stopped short of its tolerance (solve_tutte_group)
+  group_unfixed,  // a group of free vertices touches no fixed vertex
+};
+
+// Places every free vertex by a Tutte embedding with the given weights. A group that touches no
+// fixed vertex cannot happen on a connected surface with a fixed vertex.
+Placement place_free_vertices(const Surface& s, const EdgeWeights& weight, bool uniform,
+                              const std::vector<char>& fixed, std::vector<Vec3>& pos) {
   const std::size_t n = s.vertices.size();
   std::vector<std::uint32_t> slot(n, invalid_index);
   std::vector<std::uint32_t> group;
+  Placement result = Placement::solved;
   for (std::uint32_t start = 0; start < n; ++start) {
     if (fixed[start] || slot[start] != invalid_index) continue;
     // Breadth-first over free-free edges: one group, numbered in discovery order.
@@ -138,10 +151,10 @@ bool place_free_vertices(const Surface& s, const EdgeWeights& weight, bool unifo
           group.push_back(u);
         }
       }
-    if (!touches_fixed) return false;
-    solve_tutte_group(s, weight, uniform, group, slot, fixed, pos);
+    if (!touches_fixed) return Placement::group_unfixed;
+    if (!solve_tutte_group(s, weight, uniform, group, slot, fixed, pos)) result = Placement::unresolved;
   }
-  return true;
+  return result;
 }
 
 // ---- spreading: weights that undo the Tutte map's crowding ------------------------------------
@@ -234,8 +247,11 @@ void apply_shape(const BoundaryShapeSpec& spec, std::vector<Vec3>& pos) {
 // Steps 3 to 6 for fixed corners and paths: the Tutte embedding, then up to spec.spread
 // reweighted ones, each oriented, shaped and checked; g.positions gets the last valid one. The
 // steps stop early once the worst vertex stretch is within spread_enough of the median (spread
-// enough), or at the first invalid step after a valid one (the weights have begun to span more
-// than the solver resolves). "" or why the plain embedding failed (when no step was valid).
+// enough), at the first invalid step after a valid one, or after a step whose solve did not
+// converge (in both cases the weights have begun to span more than the solver resolves, and
+// later steps only compound them; a solve at its iteration bound costs 10n iterations, so
+// without this stop a hopeless attempt ran all its steps at that cost). "" or why the plain
+// embedding failed (when no step was valid).
 std::string place_and_check(const topology::TetMesh& mesh, const Surface& s, const std::vector<Vec3>& src,
                             const std::vector<char>& fixed, const BoundaryShapeSpec& spec, std::vector<Vec3>& pos,
                             GeneratedBoundary& g) {
@@ -248,7 +264,8 @@ std::string place_and_check(const topology::TetMesh& mesh, const Surface& s, con
       const double worst = spread_weights(s, src, pos, weight);
       if (worst == 0 || (!best.empty() && worst < spread_enough)) break;
     }
-    if (!place_free_vertices(s, weight, step == 0, fixed, pos)) return "a group of free boundary vertices touches no path";
+    const Placement placed = place_free_vertices(s, weight, step == 0, fixed, pos);
+    if (placed == Placement::group_unfixed) return "a group of free boundary vertices touches no path";
     g.positions = pos;
     orient_outward(s, g.positions);
     apply_shape(spec, g.positions);
@@ -259,6 +276,7 @@ std::string place_and_check(const topology::TetMesh& mesh, const Surface& s, con
       break;
     else if (step == 0)
       first_failure = std::move(why);
+    if (placed == Placement::unresolved) break;
   }
   if (best.empty()) return first_failure;
   g.positions = std::move(best);
