@@ -62,6 +62,11 @@ std::size_t bad_doubles(const MapResult& r) { return r.doubles.check.inverted + 
 
 }  // namespace
 
+bool improves_on(std::size_t fewest_bad, const MapResult& again) {
+  return again.outcome == MapOutcome::success && again.doubles.checked &&
+         !again.doubles.stopped_at_deadline && bad_doubles(again) < fewest_bad;
+}
+
 RemapStep after_remap_pass(std::size_t passes, std::size_t fewest_bad, const MapResult& again) {
   if (again.outcome != MapOutcome::success || again.doubles.stopped_at_deadline || !again.doubles.checked)
     return RemapStep::stop;
@@ -81,8 +86,11 @@ void remap_from_doubles(const MapOptions& options, const VerificationInput& in, 
   // A pass that leaves fewer bad tets but some is the start of the next: its stars are smaller,
   // around what it left (a different stall or order in one star's map can leave a crowd of its
   // own, bench/results/issue21-thin-combinatorial.md). Passes end when the count stops falling.
-  std::optional<MapResult> last;
-  std::size_t passes = 0, last_bad = bad;
+  // `last` is where the next pass starts; `best` the pass with the fewest bad tets, kept when no
+  // pass gives valid doubles but it leaves fewer than the first map (the last pass can be the
+  // best one although no further pass may run).
+  std::optional<MapResult> last, best;
+  std::size_t passes = 0, last_bad = bad, best_bad = bad;
   std::string counts = std::to_string(bad);  // inverted or flat tets after each pass
   for (RemapStep step = RemapStep::go_on; step == RemapStep::go_on;) {
     second.time_limit_seconds = 0;
@@ -94,23 +102,28 @@ void remap_from_doubles(const MapOptions& options, const VerificationInput& in, 
     step = after_remap_pass(++passes, last_bad, again);
     if (again.outcome == MapOutcome::success && again.doubles.checked)
       counts += " -> " + std::to_string(bad_doubles(again));
+    if (improves_on(best_bad, again)) {
+      best_bad = bad_doubles(again);
+      best = again;
+    }
     if (step == RemapStep::stop) break;
     last_bad = bad_doubles(again);
     last = std::move(again);
   }
   const std::string in_passes =
       passes > 1 ? " in " + std::to_string(passes) + " passes (inverted or flat: " + counts + ")" : "";
-  if (!last || !last->doubles.check.valid()) {
-    r.stats.local.fallback = what + "re-mapping from them" + in_passes + " gave no valid doubles either" +
-                             (last ? " (the best left " + std::to_string(last_bad) + ")" : "");
+  if (!best) {
+    r.stats.local.fallback = what + "re-mapping from them" + in_passes + " gave no valid doubles either";
     return;
   }
-  MapResult& again = *last;
-  MapStatistics s = merged_statistics(r, again,
-                                      what + "re-mapped from them" + in_passes + " (" +
-                                          std::to_string(again.stats.local.stars) + " stars, " +
-                                          std::to_string(again.stats.local.tets_in_stars) + " tets)",
-                                      seconds_since(start));
+  MapResult& again = *best;
+  std::string done = what + "re-mapped from them" + in_passes + " (" +
+                     std::to_string(again.stats.local.stars) + " stars, " +
+                     std::to_string(again.stats.local.tets_in_stars) + " tets)";
+  if (!again.doubles.check.valid())
+    done +=
+        "; no valid doubles either: kept the pass that left the fewest (" + std::to_string(best_bad) + ")";
+  MapStatistics s = merged_statistics(r, again, std::move(done), seconds_since(start));
   r.tets = std::move(again.tets);
   r.source = std::move(again.source);
   r.target = std::move(again.target);

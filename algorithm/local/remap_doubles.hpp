@@ -25,12 +25,16 @@ MapProblem problem_from_doubles(const MapResult& r);
 // so far, and fewer than tuning::doubles_remap_passes passes run), or stop (no map, doubles cut
 // by the time limit or unchecked, no progress, no pass left).
 enum class RemapStep { adopt, go_on, stop };
+// Whether the pass `again` is a map whose doubles, checked to the end, leave fewer inverted or
+// flat tets than `fewest_bad`: the pass kept when no pass gives valid doubles.
+bool improves_on(std::size_t fewest_bad, const MapResult& again);
 RemapStep after_remap_pass(std::size_t passes, std::size_t fewest_bad, const MapResult& again);
 
 // Runs the second pass with `options` (init given, no re-map inside it, the time limit replaced
 // by what is left of `time_left` seconds, 0 for none), from the doubles of the last pass while
-// after_remap_pass says go on, and keeps the last map when its doubles are valid, verified
-// against the original problem `in`; else `r` stands. Either way r.stats.local.fallback says what
+// after_remap_pass says go on, and keeps the pass whose doubles have the fewest inverted or flat
+// tets (valid doubles when a pass gives them) when that is fewer than r's, verified against the
+// original problem `in`; else `r` stands. Either way r.stats.local.fallback says what
 // was done. Throws MapError(internal) when a kept map fails verification.
 void remap_from_doubles(const MapOptions& options, const VerificationInput& in, double time_left, MapResult& r);
 

@@ -345,3 +345,26 @@ TEST_CASE("re-map passes: adopt valid doubles, go on while the bad tets fall, el
   again.doubles.checked = false;
   CHECK(after_remap_pass(1, 409, again) == RemapStep::stop);
 }
+
+// Without valid doubles from any pass, the one that leaves the fewest bad tets is kept when it
+// leaves fewer than the first map: a pass that stops the passes (no pass left) can still be it.
+TEST_CASE("re-map passes: the pass kept without valid doubles leaves strictly fewer bad tets") {
+  MapResult again;
+  again.outcome = MapOutcome::success;
+  again.doubles.checked = true;
+  again.doubles.check.inverted = 8;
+  again.doubles.check.degenerate = 2;
+  CHECK(improves_on(158, again));
+  CHECK(improves_on(11, again));
+  CHECK_FALSE(improves_on(10, again));  // no fewer
+  CHECK(after_remap_pass(tuning::doubles_remap_passes, 108, again) == RemapStep::stop);
+  CHECK(improves_on(108, again));            // the last pass, kept although no pass follows
+  again.doubles.stopped_at_deadline = true;  // a repair cut short: its count is not the map's
+  CHECK_FALSE(improves_on(158, again));
+  again.doubles.stopped_at_deadline = false;
+  again.doubles.checked = false;
+  CHECK_FALSE(improves_on(158, again));
+  again.doubles.checked = true;
+  again.outcome = MapOutcome::stuck;
+  CHECK_FALSE(improves_on(158, again));
+}
