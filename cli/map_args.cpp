@@ -255,6 +255,8 @@ std::optional<int> parse_map_args(const std::vector<std::string>& args, MapArgs&
     usage_error("give exactly one of --boundary, --codomain, --shape");
   if (app.get_option("--corners")->count() > 0 && a.shape.empty())
     usage_error("--corners chooses the corners of a generated boundary: it needs --shape");
+  if (app.get_option("--seed")->count() > 0 && a.shape.empty())
+    usage_error("--seed chooses a generated boundary: it needs --shape");
   if (a.options.init == algorithm::InitialMapKind::given && a.init_file.empty() && a.codomain.empty())
     usage_error("--init codomain needs --codomain");
   return std::nullopt;

@@ -493,6 +493,12 @@ TEST_CASE("cmx map --shape S --corners farthest generates the boundary cmx bound
   CHECK(lone.err.find("--corners") != std::string::npos);
   CHECK_FALSE(fs::exists(dir + "/lone.tmap"));
   CHECK(run_cmx({"map", mesh, "--shape", "sphere", "--corners", "nearest", "-o", dir + "/bad"}).exit_code == 2);
+  // Nor does a seed: ignoring it silently would let a user believe it chose something.
+  const auto seeded = run_cmx({"map", mesh, "--boundary", boundary, "--seed", "5", "-o", dir + "/seeded"});
+  CHECK(seeded.exit_code == 2);
+  CHECK(seeded.err.find("--seed") != std::string::npos);
+  CHECK(seeded.err.find("--shape") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/seeded.tmap"));
 }
 
 TEST_CASE("cmx map --combinatorial on Furch's knotted hole ends as a reported NOBUENOSS, not a bare stuck") {
