@@ -247,11 +247,12 @@ void apply_shape(const BoundaryShapeSpec& spec, std::vector<Vec3>& pos) {
 // Steps 3 to 6 for fixed corners and paths: the Tutte embedding, then up to spec.spread
 // reweighted ones, each oriented, shaped and checked; g.positions gets the last valid one. The
 // steps stop early once the worst vertex stretch is within spread_enough of the median (spread
-// enough), at the first invalid step after a valid one, or after a step whose solve did not
-// converge (in both cases the weights have begun to span more than the solver resolves, and
-// later steps only compound them; a solve at its iteration bound costs 10n iterations, so
-// without this stop a hopeless attempt ran all its steps at that cost). "" or why the plain
-// embedding failed (when no step was valid).
+// enough), at the first invalid step after a valid one, or after a reweighted step whose solve
+// did not converge (in both cases the weights have begun to span more than the solver resolves,
+// and later steps only compound them; the plain embedding's uniform weights are not the cause
+// when its solve stops short, so spreading goes on after it; a solve at its iteration bound
+// costs 10n iterations, so without this stop a hopeless attempt ran all its steps at that cost).
+// "" or why the plain embedding failed (when no step was valid).
 std::string place_and_check(const topology::TetMesh& mesh, const Surface& s, const std::vector<Vec3>& src,
                             const std::vector<char>& fixed, const BoundaryShapeSpec& spec, std::vector<Vec3>& pos,
                             GeneratedBoundary& g) {
@@ -276,7 +277,7 @@ std::string place_and_check(const topology::TetMesh& mesh, const Surface& s, con
       break;
     else if (step == 0)
       first_failure = std::move(why);
-    if (placed == Placement::unresolved) break;
+    if (step > 0 && placed == Placement::unresolved) break;
   }
   if (best.empty()) return first_failure;
   g.positions = std::move(best);
