@@ -86,11 +86,12 @@ void remap_from_doubles(const MapOptions& options, const VerificationInput& in, 
   // A pass that leaves fewer bad tets but some is the start of the next: its stars are smaller,
   // around what it left (a different stall or order in one star's map can leave a crowd of its
   // own, bench/results/issue21-thin-combinatorial.md). Passes end when the count stops falling.
-  // `last` is where the next pass starts; `best` the pass with the fewest bad tets, kept when no
-  // pass gives valid doubles but it leaves fewer than the first map (the last pass can be the
-  // best one although no further pass may run).
-  std::optional<MapResult> last, best;
-  std::size_t passes = 0, last_bad = bad, best_bad = bad;
+  // `last` is where the next pass starts, and the pass with the fewest bad tets so far (a pass
+  // goes on only from fewer than before): it is kept when no pass gives valid doubles but it
+  // leaves fewer than the first map. A pass that stops the passes because none is left can
+  // still be the best one.
+  std::optional<MapResult> last;
+  std::size_t passes = 0, last_bad = bad;
   std::string counts = std::to_string(bad);  // inverted or flat tets after each pass
   for (RemapStep step = RemapStep::go_on; step == RemapStep::go_on;) {
     second.time_limit_seconds = 0;
@@ -102,27 +103,23 @@ void remap_from_doubles(const MapOptions& options, const VerificationInput& in, 
     step = after_remap_pass(++passes, last_bad, again);
     if (again.outcome == MapOutcome::success && again.doubles.checked)
       counts += " -> " + std::to_string(bad_doubles(again));
-    if (improves_on(best_bad, again)) {
-      best_bad = bad_doubles(again);
-      best = again;
-    }
-    if (step == RemapStep::stop) break;
+    if (step == RemapStep::stop && !improves_on(last_bad, again)) break;
     last_bad = bad_doubles(again);
     last = std::move(again);
   }
   const std::string in_passes =
       passes > 1 ? " in " + std::to_string(passes) + " passes (inverted or flat: " + counts + ")" : "";
-  if (!best) {
+  if (!last) {
     r.stats.local.fallback = what + "re-mapping from them" + in_passes + " gave no valid doubles either";
     return;
   }
-  MapResult& again = *best;
+  MapResult& again = *last;
   std::string done = what + "re-mapped from them" + in_passes + " (" +
                      std::to_string(again.stats.local.stars) + " stars, " +
                      std::to_string(again.stats.local.tets_in_stars) + " tets)";
   if (!again.doubles.check.valid())
     done +=
-        "; no valid doubles either: kept the pass that left the fewest (" + std::to_string(best_bad) + ")";
+        "; no valid doubles either: kept the pass that left the fewest (" + std::to_string(last_bad) + ")";
   MapStatistics s = merged_statistics(r, again, std::move(done), seconds_since(start));
   r.tets = std::move(again.tets);
   r.source = std::move(again.source);
