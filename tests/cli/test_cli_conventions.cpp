@@ -4,7 +4,9 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,7 @@ using cmx::test::fresh_directory;
 using cmx::test::run_cmx;
 using cmx::test::run_program;
 using cmx::test::write_temp_file;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -91,6 +94,33 @@ TEST_CASE("outside a git checkout of its own the version is the project version"
   const auto here = run_program(CMX_CMAKE, {"-DCMX_VERSION_SOURCE_DIR=" CMX_SOURCE_DIR, "-DCMX_VERSION_FALLBACK=none", "-P",
                                             std::string(CMX_SOURCE_DIR) + "/cmake/CmxVersion.cmake"});
   CHECK(here.out == (git.exit_code == 0 ? git.out : "none\n"));
+}
+
+TEST_CASE("the version header is written from its template, and left alone when the version is the same") {
+  // What the build runs before compiling the commands (cli/CMakeLists.txt, cmx_version_header).
+  const std::string dir = fresh_directory();
+  const std::string out = dir + "/cmx_version.hpp";
+  const std::vector<std::string> args{
+      "-DCMX_VERSION_SOURCE_DIR=" + dir,
+      "-DCMX_VERSION_FALLBACK=" CMX_PROJECT_VERSION,
+      "-DCMX_VERSION_TEMPLATE=" + std::string(CMX_SOURCE_DIR) + "/cmake/cmx_version.hpp.in",
+      "-DCMX_VERSION_OUTPUT=" + out,
+      "-P",
+      std::string(CMX_SOURCE_DIR) + "/cmake/CmxVersion.cmake"};
+  const auto first = run_program(CMX_CMAKE, args);
+  INFO(first.err);
+  REQUIRE(first.exit_code == 0);
+  CHECK(first.out.empty());
+  CHECK(file_text(out).find("cmx_version = \"" CMX_PROJECT_VERSION "\";") != std::string::npos);
+  // Marked old by hand: written again with the same text, it would get a new time.
+  const auto old = fs::file_time_type::clock::now() - std::chrono::hours(1);
+  fs::last_write_time(out, old);
+  REQUIRE(run_program(CMX_CMAKE, args).exit_code == 0);
+  CHECK(fs::last_write_time(out) == old);
+  // A stale text (another version) is replaced.
+  std::ofstream(out) << "stale\n";
+  REQUIRE(run_program(CMX_CMAKE, args).exit_code == 0);
+  CHECK(file_text(out).find(CMX_PROJECT_VERSION) != std::string::npos);
 }
 
 TEST_CASE("every JSON output carries the version") {
