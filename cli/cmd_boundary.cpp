@@ -69,7 +69,8 @@ void add_options(CLI::App& app, BoundaryArgs& a) {
   app.add_option("--spread", a.spread,
                  "spreading steps after the Tutte embedding (default 0): each reweights it\n"
                  "against crowding (stretch minimisation), so that long thin parts\n"
-                 "(fingers, tunnels) get a fair share of the shape; 0 to 100")
+                 "(fingers, tunnels) get a fair share of the shape; an attempt stops\n"
+                 "sooner once spread enough, or once its solves stop converging; 0 to 100")
       ->type_name("N")
       ->check(CLI::Range(0, 100));
   add_corners_option(app, a.corners);
