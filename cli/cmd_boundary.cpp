@@ -30,7 +30,7 @@ namespace {
 
 const HelpText help = {
     "usage: cmx boundary MESH --shape SHAPE -o B.txt [--seed N] [--spread N]\n"
-    "                    [--corners random|farthest]\n",
+    "                    [--corners random|farthest] [--threads N]\n",
     "Generates prescribed positions for the boundary vertices of MESH (a ball), star-shaped about\n"
     "the origin, and writes 'index x y z' per boundary vertex (exact decimal doubles).\n",
     "Exit status: 0 written; 2 bad command line (also: B.txt is MESH); 3 unreadable MESH; 4 MESH is\n"
@@ -43,6 +43,7 @@ struct BoundaryArgs {
   std::optional<std::uint64_t> seed;
   int spread = 0;
   generators::CornerChoice corners = generators::CornerChoice::random;
+  unsigned threads = 0;
 };
 
 void add_options(CLI::App& app, BoundaryArgs& a) {
@@ -74,6 +75,11 @@ void add_options(CLI::App& app, BoundaryArgs& a) {
       ->type_name("N")
       ->check(CLI::Range(0, 100));
   add_corners_option(app, a.corners);
+  add_parsed(
+      app, "--threads", a.threads, [](const std::string& t) { return unsigned(parse_integer(t, 0, 1024)); },
+      "corner attempts made at once (default 0: the machine's cores); the\n"
+      "boundary written is the same for every count")
+      ->type_name("N");
 }
 
 // The shape with --seed applied; two different seeds are a contradiction.
@@ -81,6 +87,7 @@ generators::BoundaryShapeSpec shape_with_seed(const BoundaryArgs& a) {
   generators::BoundaryShapeSpec spec = a.shape;
   spec.spread = a.spread;
   spec.corners = a.corners;
+  spec.threads = a.threads;
   if (!a.seed) return spec;
   if (a.shape_text.find(':') != std::string::npos && *a.seed != spec.seed)
     usage_error("two different seeds given: " + a.shape_text + " and --seed " + std::to_string(*a.seed));

@@ -216,7 +216,8 @@ int fail(const MapArgs& a, int code, const std::string& status, const std::strin
 int load_problem(const MapArgs& a, algorithm::MapProblem& problem) {
   try {
     for (const std::string& p : input_paths(a)) check_readable(p);
-    problem = load_map_problem(a.domain, a.boundary, a.codomain, a.shape, a.seed, a.options.combinatorial, a.corners);
+    problem = load_map_problem(a.domain, a.boundary, a.codomain, a.shape, a.seed, a.options.combinatorial,
+                               a.corners, unsigned(a.options.threads));
     if (a.options.init == algorithm::InitialMapKind::given) load_initial_map(problem, a.init_file, a.codomain);
     return exit_ok;
   } catch (const io::IoError& e) {

@@ -169,9 +169,11 @@ void add_local_options(CLI::App& app, MapArgs& a) {
              "'local' says which ran and why; --snap repair's last stage follows\n"
              "every init). A file named like a keyword: ./auto")
       ->type_name("INIT");
-  add_parsed(app, "--threads", a.options.threads, [](const std::string& t) { return parse_integer(t, 0, 1024); },
-             "stars mapped at once, and greedy shelling attempts after a NOBUENOSS\n"
-             "(default 0: the machine's cores); the output is the same for every count")
+  add_parsed(
+      app, "--threads", a.options.threads, [](const std::string& t) { return parse_integer(t, 0, 1024); },
+      "stars mapped at once, greedy shelling attempts after a NOBUENOSS, and\n"
+      "--shape's corner attempts (default 0: the machine's cores); the output\n"
+      "is the same for every count")
       ->type_name("N");
 }
 

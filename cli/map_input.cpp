@@ -16,14 +16,16 @@ namespace {
 
 // Generated boundary positions (doubles, exactly) for the domain's boundary vertices; from the
 // combinatorics alone when `combinatorial`.
-io::BoundaryPositions generated_boundary(const io::TetMeshData& mesh, const std::string& shape, std::uint64_t seed,
-                                         bool combinatorial, generators::CornerChoice corners) {
+io::BoundaryPositions generated_boundary(const io::TetMeshData& mesh, const std::string& shape,
+                                         std::uint64_t seed, bool combinatorial,
+                                         generators::CornerChoice corners, unsigned threads) {
   auto spec = generators::parse_boundary_shape(shape);
   if (!spec)
     throw algorithm::MapError(algorithm::MapErrorKind::invalid_input,
                               "unknown shape '" + shape + "' (tet, stiff-tet, sphere, star[:SEED])");
   if (shape.find(':') == std::string::npos) spec->seed = seed;
   spec->corners = corners;
+  spec->threads = threads;
   const topology::TetMesh tm(mesh.positions.size(), mesh.tets);
   if (const auto ball = topology::check_ball(tm); !ball.ok) throw algorithm::MapError(algorithm::MapErrorKind::not_ball, ball.message);
   std::vector<std::array<double, 3>> source;  // empty: no geometry
@@ -82,13 +84,15 @@ Rational enclosed_volume(const io::TetMeshData& mesh, const io::BoundaryPosition
 }  // namespace
 
 algorithm::MapProblem load_map_problem(const std::string& domain_path, const std::string& boundary_path,
-                                       const std::string& codomain_path, const std::string& shape, std::uint64_t seed,
-                                       bool combinatorial, generators::CornerChoice corners) {
+                                       const std::string& codomain_path, const std::string& shape,
+                                       std::uint64_t seed, bool combinatorial,
+                                       generators::CornerChoice corners, unsigned threads) {
   io::TetMeshData mesh = combinatorial ? combinatorial_domain(domain_path) : io::read_tet_mesh(domain_path);
   io::BoundaryPositions b;
   if (!boundary_path.empty()) b = io::read_boundary_positions(boundary_path, mesh.positions.size());
   else if (!codomain_path.empty()) b = io::read_boundary_positions_from_codomain(mesh, codomain_path);
-  else b = generated_boundary(mesh, shape, seed, combinatorial, corners);
+  else
+    b = generated_boundary(mesh, shape, seed, combinatorial, corners, threads);
   // A facet list's orientation is a convention: the prescribed boundary decides which one.
   if (combinatorial && enclosed_volume(mesh, b) < 0)
     for (auto& t : mesh.tets) std::swap(t[2], t[3]);

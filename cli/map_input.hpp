@@ -15,11 +15,13 @@ namespace cmx::cli {
 // (io/read_facets.hpp) or a mesh whose positions are ignored; its tets are oriented alike
 // (topology::orient_coherently; MapError not_ball when they cannot be) and, when the prescribed
 // boundary encloses a negative volume with them, all turned over; a generated shape works from
-// the combinatorics alone; the problem's source positions are zeros.
+// the combinatorics alone; the problem's source positions are zeros. `threads`: the generated
+// shape's corner attempts made at once (generators::BoundaryShapeSpec::threads).
 algorithm::MapProblem load_map_problem(const std::string& domain_path, const std::string& boundary_path,
-                                       const std::string& codomain_path, const std::string& shape, std::uint64_t seed,
-                                       bool combinatorial = false,
-                                       generators::CornerChoice corners = generators::CornerChoice::random);
+                                       const std::string& codomain_path, const std::string& shape,
+                                       std::uint64_t seed, bool combinatorial = false,
+                                       generators::CornerChoice corners = generators::CornerChoice::random,
+                                       unsigned threads = 1);
 
 // The initial map of --init FILE (lines 'index x y z' for every vertex) or, when init_file is
 // empty, --init codomain (every position of the codomain mesh) into p.initial_target. Throws

@@ -1,12 +1,15 @@
 #include "generators/boundary_shapes.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <numbers>
 #include <random>
 #include <string_view>
+#include <thread>
 #include <utility>
 
 #include "generators/boundary_corners.hpp"
@@ -284,6 +287,21 @@ std::string place_and_check(const topology::TetMesh& mesh, const Surface& s, con
   return "";
 }
 
+// One attempt: corners drawn from the attempt's own stream, the paths between them, then the
+// embedding and its checks. "" with g.positions set, or why the attempt failed.
+std::string attempt(const topology::TetMesh& mesh, const Surface& s, const std::vector<Vec3>& src,
+                    const BoundaryShapeSpec& spec, int index, GeneratedBoundary& g) {
+  std::mt19937_64 rng(mix(spec.seed + 0x9E3779B97F4A7C15ull * std::uint64_t(index + 1)));
+  const auto corners = choose_corners(s, src, spec, index, rng);
+  std::vector<char> fixed;
+  std::vector<Vec3> pos;
+  const bool keep_apart = spec.corners == CornerChoice::farthest;
+  std::string why =
+      fix_corner_paths(s, src, corners, keep_apart, spec.shape == BoundaryShape::stiff_tet, fixed, pos);
+  if (why.empty()) why = place_and_check(mesh, s, src, fixed, spec, pos, g);
+  return why;
+}
+
 GeneratedBoundary failure(std::string message, int attempts = 0) {
   GeneratedBoundary g;
   g.message = std::move(message);
@@ -347,24 +365,49 @@ GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::ve
   std::vector<Vec3> src(source.empty() ? 0 : s.vertices.size());  // empty: no geometry
   for (std::size_t i = 0; i < src.size(); ++i) src[i] = source[s.vertices[i]];
 
-  GeneratedBoundary g;
-  g.vertices = s.vertices;
-  std::string first_failure, last_failure;
-  for (int attempt = 0; attempt < max_boundary_attempts; ++attempt) {
-    std::mt19937_64 rng(mix(spec.seed + 0x9E3779B97F4A7C15ull * std::uint64_t(attempt + 1)));
-    const auto corners = choose_corners(s, src, spec, attempt, rng);
-    std::vector<char> fixed;
-    std::vector<Vec3> pos;
-    const bool keep_apart = spec.corners == CornerChoice::farthest;
-    std::string why = fix_corner_paths(s, src, corners, keep_apart, spec.shape == BoundaryShape::stiff_tet, fixed, pos);
-    if (why.empty()) why = place_and_check(mesh, s, src, fixed, spec, pos, g);
-    g.attempts = attempt + 1;
-    if (why.empty()) {
-      g.ok = true;
-      return g;
+  // Attempts are handed out by an atomic counter, so a slow attempt does not hold up the other
+  // threads; none starts past the earliest success known. The result is the earliest attempt
+  // that succeeds, all earlier ones having failed, whatever the thread count.
+  const unsigned threads =
+      std::max(1u, spec.threads != 0 ? spec.threads : std::thread::hardware_concurrency());
+  std::vector<GeneratedBoundary> results(static_cast<std::size_t>(max_boundary_attempts));
+  std::vector<std::string> why(results.size());
+  std::vector<std::exception_ptr> thrown(results.size());
+  std::atomic<int> next{0}, earliest_success{max_boundary_attempts};
+  const auto work = [&] {
+    for (int k = next++; k < max_boundary_attempts && k < earliest_success.load(); k = next++) {
+      GeneratedBoundary& g = results[std::size_t(k)];
+      g.vertices = s.vertices;
+      try {
+        why[std::size_t(k)] = attempt(mesh, s, src, spec, k, g);
+      } catch (...) {
+        thrown[std::size_t(k)] = std::current_exception();
+        why[std::size_t(k)] = "exception";
+      }
+      if (!why[std::size_t(k)].empty()) {
+        g = GeneratedBoundary{};  // a failed attempt keeps only its message
+        continue;
+      }
+      for (int e = earliest_success.load(); k < e && !earliest_success.compare_exchange_weak(e, k);) {
+      }
     }
-    if (first_failure.empty()) first_failure = why;
-    last_failure = std::move(why);
+  };
+  {
+    std::vector<std::jthread> helpers;
+    for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
+    work();
+  }
+  std::string first_failure, last_failure;
+  for (int k = 0; k < max_boundary_attempts; ++k) {
+    if (thrown[std::size_t(k)]) std::rethrow_exception(thrown[std::size_t(k)]);
+    if (why[std::size_t(k)].empty()) {
+      GeneratedBoundary& g = results[std::size_t(k)];
+      g.attempts = k + 1;
+      g.ok = true;
+      return std::move(g);
+    }
+    if (first_failure.empty()) first_failure = why[std::size_t(k)];
+    last_failure = std::move(why[std::size_t(k)]);
   }
   return failure(text("no valid ", shape_name(spec.shape), " boundary in ", max_boundary_attempts,
                       " attempts (first failure: ", first_failure, "; last failure: ", last_failure, ")"),

@@ -73,6 +73,9 @@ struct BoundaryShapeSpec {
   // resolve; a few steps spread it over a fair share of the shape.
   int spread = 0;
   CornerChoice corners = CornerChoice::random;
+  // Attempts run this many at once (0: the cores), each on its own data; their results are taken
+  // in attempt order, so the boundary and the failure message are the same for every count.
+  unsigned threads = 1;
 };
 
 // Reads "tet", "stiff-tet", "sphere" or "star", each optionally followed by ":SEED" (a decimal

@@ -307,3 +307,37 @@ TEST_CASE("cmx boundary --corners farthest: a boundary where drawn corners find 
   CHECK(bad.err.find("--corners") != std::string::npos);
   CHECK_FALSE(fs::exists(drawn));
 }
+
+TEST_CASE("cmx boundary --threads: the same boundary, attempt count and failure message for every count") {
+  // Two fingers two cells wide: drawn corners fail 22 attempts before the 23rd gives a stiff tet,
+  // so batches of attempts end on either side of the one that is kept; 80 cells long, every one
+  // of the 100 attempts fails, and the message quotes the first and the last failure.
+  const auto mesh = generated_mesh("fingers:2,2,40");
+  std::string first_text, first_note;
+  for (const char* threads : {"1", "2", "3", "8"}) {
+    CAPTURE(threads);
+    const auto out = fresh_path(".txt");
+    const auto r = run_cmx({"boundary", mesh, "--shape", "stiff-tet", "--threads", threads, "-o", out});
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.find("23 attempts") != std::string::npos);
+    if (first_text.empty()) first_text = file_text(out), first_note = r.err;
+    CHECK(file_text(out) == first_text);
+    CHECK(r.err.substr(r.err.find(':', r.err.find("wrote"))) ==
+          first_note.substr(first_note.find(':', first_note.find("wrote"))));
+  }
+  const auto long_fingers = generated_mesh("fingers:2,2,80");
+  std::string failure;
+  for (const char* threads : {"1", "3"}) {
+    CAPTURE(threads);
+    const auto out = fresh_path(".txt");
+    const auto r = run_cmx({"boundary", long_fingers, "--shape", "sphere", "--threads", threads, "-o", out});
+    CHECK(r.exit_code == 4);
+    CHECK_FALSE(fs::exists(out));
+    CHECK(r.err.find("100 attempts") != std::string::npos);
+    if (failure.empty()) failure = r.err;
+    CHECK(r.err == failure);
+  }
+  CHECK(
+      run_cmx({"boundary", mesh, "--shape", "tet", "--threads", "-1", "-o", fresh_path(".txt")}).exit_code ==
+      2);
+}
