@@ -1,21 +1,19 @@
 #include "generators/boundary_shapes.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <charconv>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <numbers>
 #include <random>
 #include <string_view>
-#include <thread>
 #include <utility>
 
 #include "generators/boundary_corners.hpp"
 #include "generators/boundary_surface.hpp"
 #include "kernel/orient.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/indexed_tasks.hpp"
 
 // The placement and the checks; the surface and its helpers are in generators/boundary_surface.hpp,
 // the corners and the paths between them in generators/boundary_corners.hpp.
@@ -365,52 +363,26 @@ GeneratedBoundary generate_boundary(const topology::TetMesh& mesh, const std::ve
   std::vector<Vec3> src(source.empty() ? 0 : s.vertices.size());  // empty: no geometry
   for (std::size_t i = 0; i < src.size(); ++i) src[i] = source[s.vertices[i]];
 
-  // Attempts are handed out by an atomic counter, so a slow attempt does not hold up the other
-  // threads; none starts past the earliest success known. The result is the earliest attempt
-  // that succeeds, all earlier ones having failed, whatever the thread count.
-  const unsigned threads =
-      std::max(1u, spec.threads != 0 ? spec.threads : std::thread::hardware_concurrency());
+  // The result is the earliest attempt that succeeds, all earlier ones having failed, whatever
+  // the thread count (topology::run_indexed hands them out in order and starts none past it).
   std::vector<GeneratedBoundary> results(static_cast<std::size_t>(max_boundary_attempts));
   std::vector<std::string> why(results.size());
-  std::vector<std::exception_ptr> thrown(results.size());
-  std::atomic<int> next{0}, earliest_success{max_boundary_attempts};
-  const auto work = [&] {
-    for (int k = next++; k < max_boundary_attempts && k < earliest_success.load(); k = next++) {
-      GeneratedBoundary& g = results[std::size_t(k)];
-      g.vertices = s.vertices;
-      try {
-        why[std::size_t(k)] = attempt(mesh, s, src, spec, k, g);
-      } catch (...) {
-        thrown[std::size_t(k)] = std::current_exception();
-        why[std::size_t(k)] = "exception";
-      }
-      if (!why[std::size_t(k)].empty()) {
-        g = GeneratedBoundary{};  // a failed attempt keeps only its message
-        continue;
-      }
-      for (int e = earliest_success.load(); k < e && !earliest_success.compare_exchange_weak(e, k);) {
-      }
-    }
-  };
-  {
-    std::vector<std::jthread> helpers;
-    for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
-    work();
-  }
-  std::string first_failure, last_failure;
-  for (int k = 0; k < max_boundary_attempts; ++k) {
-    if (thrown[std::size_t(k)]) std::rethrow_exception(thrown[std::size_t(k)]);
-    if (why[std::size_t(k)].empty()) {
-      GeneratedBoundary& g = results[std::size_t(k)];
-      g.attempts = k + 1;
-      g.ok = true;
-      return std::move(g);
-    }
-    if (first_failure.empty()) first_failure = why[std::size_t(k)];
-    last_failure = std::move(why[std::size_t(k)]);
+  const std::size_t first = topology::run_indexed(
+      results.size(), topology::thread_count(spec.threads, results.size()), [&](std::size_t k) {
+        GeneratedBoundary& g = results[k];
+        g.vertices = s.vertices;
+        why[k] = attempt(mesh, s, src, spec, int(k), g);
+        if (!why[k].empty()) g = GeneratedBoundary{};  // a failed attempt keeps only its message
+        return why[k].empty();
+      });
+  if (first < results.size()) {
+    GeneratedBoundary& g = results[first];
+    g.attempts = int(first) + 1;
+    g.ok = true;
+    return std::move(g);
   }
   return failure(text("no valid ", shape_name(spec.shape), " boundary in ", max_boundary_attempts,
-                      " attempts (first failure: ", first_failure, "; last failure: ", last_failure, ")"),
+                      " attempts (first failure: ", why.front(), "; last failure: ", why.back(), ")"),
                  max_boundary_attempts);
 }
 

@@ -1,12 +1,11 @@
 #include "topology/shelling.hpp"
 
 #include <algorithm>
-#include <exception>
 #include <queue>
 #include <random>
-#include <thread>
 
 #include "topology/complex_queries.hpp"
+#include "topology/indexed_tasks.hpp"
 #include "topology/mesh_edits.hpp"
 #include "topology/shelling_counts.hpp"
 #include "topology/shelling_rule.hpp"
@@ -108,8 +107,7 @@ ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
   const TetAdjacency adj = tet_adjacency(m);
   const ShellingCounts fresh(m, adj);
   const std::size_t attempts = std::max<std::size_t>(options.max_attempts, 1);
-  const std::size_t cores = std::max<std::size_t>(1, std::thread::hardware_concurrency());
-  const std::size_t threads = std::min(options.threads ? options.threads : cores, attempts);
+  const std::size_t threads = thread_count(options.threads, attempts);
   // Attempts run in batches of `threads`, each on a copy of the fresh counts; their results are
   // taken in attempt order, so the outcome is the one-thread outcome whatever the count.
   for (std::size_t first = 0; first < attempts; first += threads) {
@@ -119,21 +117,13 @@ ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
     }
     const std::size_t n = std::min(threads, attempts - first);
     std::vector<std::vector<TetId>> orders(n);
-    std::vector<std::exception_ptr> errors(n);
-    const auto run = [&](std::size_t i) {
-      try {
-        ShellingCounts state = fresh;
-        orders[i] = greedy_attempt(m, live, options.seed + 0x9e3779b97f4a7c15ull * (first + i), state);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    };
-    std::vector<std::thread> pool;
-    for (std::size_t i = 1; i < n; ++i) pool.emplace_back(run, i);
-    run(0);
-    for (std::thread& t : pool) t.join();
+    // An attempt that shells is the last one looked at below: none after it need run.
+    run_indexed(n, n, [&](std::size_t i) {
+      ShellingCounts state = fresh;
+      orders[i] = greedy_attempt(m, live, options.seed + 0x9e3779b97f4a7c15ull * (first + i), state);
+      return orders[i].size() == live.size();
+    });
     for (std::size_t i = 0; i < n; ++i) {
-      if (errors[i]) std::rethrow_exception(errors[i]);
       ++r.attempts;
       r.best_removed = std::max(r.best_removed, orders[i].size());
       if (orders[i].size() == live.size()) {

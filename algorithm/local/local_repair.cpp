@@ -1,18 +1,16 @@
 #include "algorithm/local/local_repair.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <exception>
 #include <functional>
 #include <limits>
 #include <mutex>
-#include <thread>
 
+#include "algorithm/doubles/double_output.hpp"
 #include "algorithm/local/initial_map.hpp"
 #include "algorithm/local/stars.hpp"
-#include "algorithm/doubles/double_output.hpp"
 #include "algorithm/map_error.hpp"
 #include "algorithm/run_control.hpp"
 #include "algorithm/tuning.hpp"
@@ -20,6 +18,7 @@
 #include "arith/rounding.hpp"
 #include "kernel/orient.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/indexed_tasks.hpp"
 
 namespace cmx::algorithm {
 namespace {
@@ -95,33 +94,22 @@ MapOptions star_options(const MapOptions& options, std::mutex& lock, RunControl&
   return o;
 }
 
-std::size_t thread_count(const MapOptions& options, std::size_t stars) {
-  const std::size_t cores = std::max<std::size_t>(1, std::thread::hardware_concurrency());
-  return std::max<std::size_t>(1, std::min(options.threads ? options.threads : cores, stars));
-}
-
 // Maps every star, `threads` at once; results in star order whatever the schedule.
 std::vector<StarRun> map_stars(const std::vector<StarProblem>& problems, const MapOptions& options,
                                RunControl& control, std::size_t threads) {
   std::vector<StarRun> runs(problems.size());
   std::mutex lock;
-  std::atomic<std::size_t> next{0};
   std::size_t done = 0;
-  const auto work = [&] {
-    for (std::size_t i; (i = next++) < problems.size();) {
-      try {
-        runs[i].result = map_to_domain(problems[i].problem, star_options(options, lock, control, runs[i], i));
-      } catch (...) {
-        runs[i].error = std::current_exception();
-      }
-      const std::lock_guard<std::mutex> hold(lock);
-      control.report("stars", ++done, problems.size());
+  topology::run_indexed(problems.size(), threads, [&](std::size_t i) {
+    try {
+      runs[i].result = map_to_domain(problems[i].problem, star_options(options, lock, control, runs[i], i));
+    } catch (...) {
+      runs[i].error = std::current_exception();  // first_failure decides what it means
     }
-  };
-  std::vector<std::thread> pool;
-  for (std::size_t k = 1; k < threads; ++k) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
+    const std::lock_guard<std::mutex> hold(lock);
+    control.report("stars", ++done, problems.size());
+    return false;
+  });
   return runs;
 }
 
@@ -408,7 +396,7 @@ bool map_locally(const MapProblem& problem, const ValidatedProblem& v, const Map
   phase = Clock::now();
   std::vector<StarProblem> problems;
   for (const Star& star : stars.stars) problems.push_back(star_problem(star, v, *target));
-  ls.threads = thread_count(options, problems.size());
+  ls.threads = topology::thread_count(options.threads, problems.size());
   std::vector<StarRun> runs = map_stars(problems, options, control, ls.threads);
   ls.seconds_map_stars = seconds_since(phase);
   if (std::optional<MapResult> failed = first_failure(runs)) {
