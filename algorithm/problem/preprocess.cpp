@@ -92,8 +92,14 @@ class Preprocessor {
   // --- geometry: the shrink point ----------------------------------------------------------
 
   // The centre every one-interior-vertex tet is tested against: the Chebyshev centre of the
-  // kernel and all their half-spaces when that has interior (no split needed at all), else the
-  // Chebyshev centre of the kernel alone.
+  // kernel and all their half-spaces when that has interior (no split needed at all), else a
+  // point of the kernel alone: its few-bit centre with as many coordinates zeroed as stay
+  // strictly inside it, or its Chebyshev centre when none can be. The tets kept are those whose
+  // half-spaces contain that point, so p_c (chosen in finish() among them, zeros first) gets the
+  // same zeros. Testing the kernel's centre instead leaves p_c wherever the kept half-spaces
+  // centre it, often with a coordinate along which doubles cannot resolve its crowd
+  // (fingers:6,3,50 onto a tet: p_c (0, 0, 45/128), 10 tets inverted in doubles after every
+  // repair; tested at the origin: valid doubles at once; docs/algorithm.md, "Shrink point").
   void choose_centre() {
     accepted_.clear();
     for (const auto& h : problem_.kernel) accepted_.push_back(to_lp(h));
@@ -115,6 +121,10 @@ class Preprocessor {
     }
     solve();
     if (!centre_) throw MapError(MapErrorKind::internal, "the boundary kernel lost its interior");
+    const cmx::Point3 few = lp::few_bits_by_dyadics(accepted_, last_.center).point;
+    const cmx::Point3 zeroed = with_zero_coordinates(few);
+    if (std::any_of(zeroed.begin(), zeroed.end(), [](const Rational& c) { return c == 0; }))
+      centre_ = HPoint(zeroed[0], zeroed[1], zeroed[2]);
   }
 
   // Splits, in tet order and then in the pieces made, whatever is invalid for the centre;

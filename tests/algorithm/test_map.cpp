@@ -158,6 +158,21 @@ TEST_CASE("the shrink point has as many zero coordinates as its constraints allo
   for (int i = 0; i < 3; ++i) CHECK(far.center.coordinate(i) != 0);
 }
 
+TEST_CASE("where the shrink constraints need splits, p_c still gets the zeros the kernel allows") {
+  // No point satisfies the kernel and every one-interior-vertex tet's half-space, so tets are
+  // split: those whose half-space excludes the kernel point with the most zero coordinates (the
+  // origin here). Tested against the kernel's Chebyshev centre instead, p_c ended at (0, 1/2, 0)
+  // on the ball and (1/64, 1/4, 1/4) on the slab, where doubles resolve its crowd far worse.
+  const std::pair<MapProblem, const char*> cases[] = {{problem_from(voxel_ball(3, 1), "sphere"), "ball"},
+                                                      {problem_from(thin_slab(8, 7, 1), "tet"), "slab"}};
+  for (const auto& [p, name] : cases) {
+    CAPTURE(name);
+    const MapResult r = map_checked(p);
+    CHECK(r.stats.split_no_shrink_point > 0);
+    CHECK(r.center == HPoint());
+  }
+}
+
 TEST_CASE("collapsing what each star-shapification added keeps every invariant, and collapses") {
   // A one-layer slab (no interior vertex) onto the tetrahedron: five star-shapifications, three
   // of whose added vertices collapse right away (measured with the origin as shrink point).

@@ -541,15 +541,15 @@ TEST_CASE("cmx map --shelled after-pushes on Furch's knotted hole: the fallback 
 }
 
 TEST_CASE("cmx map on Furch's knotted hole stalls, finds a NOBUENOSS ahead and ends there (exit 7)") {
-  // With its geometry and a stiff-tet boundary of farthest corners, greedy expansion stops making
-  // the cluster smaller; the early check (after 64, 128, ... stalled expansions) expands the
-  // cluster mesh left topologically in four orders, each stops at a NOBUENOSS, and the run ends
-  // as one, without restarts and long before the stall bound.
+  // With its geometry and a sphere boundary of farthest corners, greedy expansion stops making
+  // the cluster smaller (onto the stiff tet it now meets the NOBUENOSS itself); the early check (after 64,
+  // 128, ... stalled expansions) expands the cluster mesh left topologically in four orders, each stops at a
+  // NOBUENOSS, and the run ends as one, without restarts and long before the stall bound.
   const std::string dir = fresh_directory();
   const std::string mesh = dir + "/knotted.ovm", report = dir + "/r.json";
   REQUIRE(run_cmx({"generate-mesh", "--shape", "knotted-hole", "-o", mesh, "-q"}).exit_code == 0);
-  const auto r = run_cmx({"map", mesh, "--shape", "stiff-tet", "--corners", "farthest", "-o", dir + "/out", "--report",
-                          report, "--threads", "1"});
+  const auto r = run_cmx({"map", mesh, "--shape", "sphere", "--corners", "farthest", "-o", dir + "/out",
+                          "--report", report, "--threads", "1"});
   INFO(r.err);
   CHECK(r.exit_code == 7);
   CHECK(r.err.find("stalled: ") != std::string::npos);
