@@ -60,19 +60,22 @@ MapStatistics merged_statistics(const MapResult& r, const MapResult& again, std:
 
 std::size_t bad_doubles(const MapResult& r) { return r.doubles.check.inverted + r.doubles.check.degenerate; }
 
+// A map whose doubles were checked to the end: only then is its count of bad tets one to compare.
+bool doubles_checked_to_the_end(const MapResult& again) {
+  return again.outcome == MapOutcome::success && again.doubles.checked && !again.doubles.stopped_at_deadline;
+}
+
 }  // namespace
 
 bool improves_on(std::size_t fewest_bad, const MapResult& again) {
-  return again.outcome == MapOutcome::success && again.doubles.checked &&
-         !again.doubles.stopped_at_deadline && bad_doubles(again) < fewest_bad;
+  return doubles_checked_to_the_end(again) && bad_doubles(again) < fewest_bad;
 }
 
 RemapStep after_remap_pass(std::size_t passes, std::size_t fewest_bad, const MapResult& again) {
-  if (again.outcome != MapOutcome::success || again.doubles.stopped_at_deadline || !again.doubles.checked)
-    return RemapStep::stop;
+  if (!doubles_checked_to_the_end(again)) return RemapStep::stop;
   if (again.doubles.check.valid()) return RemapStep::adopt;
-  return bad_doubles(again) < fewest_bad && passes < tuning::doubles_remap_passes ? RemapStep::go_on
-                                                                                  : RemapStep::stop;
+  return improves_on(fewest_bad, again) && passes < tuning::doubles_remap_passes ? RemapStep::go_on
+                                                                                 : RemapStep::stop;
 }
 
 void remap_from_doubles(const MapOptions& options, const VerificationInput& in, double time_left, MapResult& r) {
