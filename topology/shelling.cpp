@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <queue>
 #include <random>
+#include <tuple>
 
 #include "topology/complex_queries.hpp"
 #include "topology/indexed_tasks.hpp"
@@ -65,31 +66,58 @@ bool is_shelling_removable(const TetMesh& m, const TetAdjacency& adj, TetId t, c
 
 namespace {
 
+// The cost of the step Alg. 2 makes of removing t now (ShellingOptions::interior).
+int step_cost(const TetMesh& m, const TetAdjacency& adj, const ShellingCounts& state, TetId t,
+              const std::vector<char>& interior) {
+  const Tet& x = m.tet(t);
+  int shared = 0;
+  bool all_interior = true;
+  for (int i = 0; i < 4; ++i) {
+    const TetId n = adj.neighbor[t][i];
+    if (n == invalid_index || !state.remaining(n)) continue;
+    ++shared;
+    all_interior = all_interior && interior[x[i]];  // the simplex: the vertices opposite shared faces
+  }
+  if (shared == 0 || !all_interior) return 0;
+  return shared;
+}
+
 // One greedy attempt from `state` (every tet remaining): the removal order it reached.
-std::vector<TetId> greedy_attempt(const TetMesh& m, const std::vector<TetId>& live, std::uint64_t seed,
-                                  ShellingCounts& state) {
+std::vector<TetId> greedy_attempt(const TetMesh& m, const TetAdjacency& adj, const std::vector<TetId>& live,
+                                  std::uint64_t seed, ShellingCounts& state,
+                                  const std::vector<char>* interior) {
   std::mt19937_64 rng(seed);
   std::vector<std::uint64_t> key(m.tet_capacity(), 0);
   for (TetId t : live) key[t] = rng();
   std::vector<char> queued(m.tet_capacity(), 0);
-  using Item = std::pair<std::uint64_t, TetId>;
+  std::vector<int> queued_cost(m.tet_capacity(), 0);
+  const auto cost = [&](TetId t) { return interior ? step_cost(m, adj, state, t, *interior) : 0; };
+  using Item = std::tuple<int, std::uint64_t, TetId>;
   std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  // A tet is queued once: a copy pushed again would carry the same key and be popped right
-  // after the first, with nothing removed in between, so the removal order is the same.
+  // A tet is queued once per cost: a copy pushed again with the same cost would carry the same
+  // key and be popped right after the first, with nothing removed in between. A queued tet whose
+  // cost fell is queued again; an entry whose cost is no longer the tet's is dropped when popped.
   const auto push = [&](TetId t) {
-    if (!queued[t] && state.removable(t)) {
-      queued[t] = 1;
-      queue.push({key[t], t});
-    }
+    if (!state.removable(t)) return;
+    const int c = cost(t);
+    if (queued[t] && c >= queued_cost[t]) return;
+    queued[t] = 1;
+    queued_cost[t] = c;
+    queue.push({c, key[t], t});
   };
   for (TetId t : live) push(t);
   std::vector<TetId> order;
   order.reserve(live.size());
   while (!queue.empty() && state.remaining_count() > 0) {
-    const TetId t = queue.top().second;
+    const auto [c, k, t] = queue.top();
     queue.pop();
+    if (!queued[t] || c != queued_cost[t]) continue;
     queued[t] = 0;
     if (!state.removable(t)) continue;
+    if (const int now = cost(t); now != c) {  // dearer since it was queued
+      push(t);
+      continue;
+    }
     state.remove(t);
     order.push_back(t);
     // Removability can change only for tets sharing a vertex with t.
@@ -120,7 +148,8 @@ ShellingResult find_shelling(const TetMesh& m, const ShellingOptions& options) {
     // An attempt that shells is the last one looked at below: none after it need run.
     run_indexed(n, n, [&](std::size_t i) {
       ShellingCounts state = fresh;
-      orders[i] = greedy_attempt(m, live, options.seed + 0x9e3779b97f4a7c15ull * (first + i), state);
+      orders[i] = greedy_attempt(m, adj, live, options.seed + 0x9e3779b97f4a7c15ull * (first + i), state,
+                                 options.interior);
       return orders[i].size() == live.size();
     });
     for (std::size_t i = 0; i < n; ++i) {

@@ -35,6 +35,13 @@ struct ShellingOptions {
   // Attempts run at once (0: the machine's cores; never more than max_attempts). The result is
   // the same for every count; only how many attempts a deadline lets start can differ.
   std::size_t threads = 1;
+  // When given (one flag per vertex: interior to the mesh), removable tets are taken cheapest
+  // step first, the seeded priority breaking ties, for Alg. 2 replayed with the boundary in place
+  // (algorithm/expansion/shelling_replay.cpp): a step whose vertex or split simplex has a
+  // boundary vertex changes no cluster mesh (cost 0), then a removal by an interior vertex of its
+  // own (1), a split of a free interior face (2), a split of a free interior edge (3, the one
+  // that needs inflation). Without it the seeded priority alone orders them.
+  const std::vector<char>* interior = nullptr;
 };
 
 struct ShellingResult {
