@@ -121,6 +121,7 @@ ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_poin
   settings.smooth_every = options.smooth_every;
   settings.collapse_after_refinement = options.collapse_refinement;
   settings.shelled = options.shelled;
+  settings.replay = options.replay;
   settings.subcluster_size = options.subclusters;
   settings.before_fallback = options.before_fallback;
   settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior

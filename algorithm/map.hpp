@@ -56,6 +56,14 @@ enum class ShelledMode : std::uint8_t { when_stuck, after_pushes, first };
 std::optional<ShelledMode> parse_shelled_mode(std::string_view name);
 std::string_view to_string(ShelledMode m);
 
+// Whether the expansion replays a shelling of the input from the start (paper Sec. 4.3, Alg. 2;
+// expansion/shelling_replay.cpp) instead of expanding greedily: off; until_greedy, until
+// topological expansion of the cluster left completes in the default order, then the greedy loop;
+// full, every step. The names are those of cmx map --replay-shelling.
+enum class ReplayMode : std::uint8_t { off, until_greedy, full };
+std::optional<ReplayMode> parse_replay_mode(std::string_view name);
+std::string_view to_string(ReplayMode m);
+
 // What the progress callback gets. During the expansion: the cluster counts below. In later
 // phases ("collapse", "doubles", "verification"): done of total steps (total 0: unknown).
 struct MapProgress {
@@ -101,6 +109,7 @@ struct MapOptions {
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
   bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)
   ShelledMode shelled = ShelledMode::when_stuck;  // when the loop star-shapifies by shelling
+  ReplayMode replay = ReplayMode::off;            // replay a shelling from the start (Alg. 2)
   std::size_t subclusters = 4;                // largest subcluster expanded at once, 2..4 (Sec. 4.2.5); 0 or 1: off
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
   // Polled between steps of every phase with the phase's name ("expansion", "collapse",
@@ -193,6 +202,17 @@ struct MapStatistics {
   std::size_t shelling_tets = 0, shelling_split_chords = 0;  // the mesh searched: the input, chords split
   bool shelling_replay_completed = false;  // its topological replay by Alg. 2 (shelling_fallback.hpp)
   std::size_t shelling_replay_expansions = 0, shelling_replay_empty_cone_steps = 0;
+  // The geometric replay of a shelling (MapOptions::replay, expansion/shelling_replay.cpp).
+  struct Replay {
+    bool ran = false;
+    bool handed_over = false;      // until_greedy: the greedy loop took over
+    std::size_t chord_splits = 0;  // chords split before the shelling
+    std::size_t shelling_attempts = 0;
+    std::size_t steps = 0;       // of Alg. 2's plan
+    std::size_t splits = 0;      // of all-cluster simplices, at p_c (the others change nothing)
+    std::size_t expansions = 0;  // planned vertices expanded
+    std::size_t drained = 0;     // vertices of the refinement's own expanded after a step
+  } replay;
   std::size_t refinement_collapses = 0;       // added vertices collapsed right after their refinement
   std::size_t expansion_restarts = 0;         // runaway restarts (expansion/cluster_expansion.hpp)
   // Double output.

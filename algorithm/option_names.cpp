@@ -21,7 +21,17 @@ constexpr OptionNames<ShelledMode, 3> shelled_mode_names{{{{ShelledMode::when_st
                                                          {ShelledMode::after_pushes, "after-pushes"},
                                                          {ShelledMode::first, "first"}}}};
 
+constexpr OptionNames<ReplayMode, 3> replay_mode_names{
+    {{{ReplayMode::off, "off"}, {ReplayMode::until_greedy, "until-greedy"}, {ReplayMode::full, "full"}}}};
+
 }  // namespace
+
+std::optional<ReplayMode> parse_replay_mode(std::string_view name) {
+  return replay_mode_names.parse(name);
+}
+std::string_view to_string(ReplayMode m) {
+  return replay_mode_names.name(m);
+}
 
 std::optional<ShelledMode> parse_shelled_mode(std::string_view name) {
   return shelled_mode_names.parse(name);

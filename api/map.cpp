@@ -65,6 +65,9 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
   if (!order) return bad("order", in.order, "is not an expansion order (priority, index, random:SEED)");
   const auto shelled = algorithm::parse_shelled_mode(in.shelled);
   if (!shelled) return bad("shelled", in.shelled, "is not a shelled star-shapification mode (when-stuck, after-pushes, first)");
+  const auto replay = algorithm::parse_replay_mode(in.replay_shelling);
+  if (!replay)
+    return bad("replay_shelling", in.replay_shelling, "is not a replay mode (off, until-greedy, full)");
   const auto snap = algorithm::parse_snap_policy(in.snap);
   if (!snap) return bad("snap", in.snap, "is not a snap policy (repair, chebyshev, nearest, none)");
   const auto precision = algorithm::parse_precision_policy(in.precision);
@@ -97,6 +100,7 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
   out.flip_collapse = in.flip_collapse;
   out.collapse_refinement = in.collapse_refinement;
   out.shelled = *shelled;
+  out.replay = *replay;
   out.check = in.check;
   out.init = *init;
   out.combinatorial = in.combinatorial;

@@ -75,6 +75,14 @@ JsonObject expansion_json(const algorithm::MapStatistics& s) {
   ex.num("inflation_splits", n(s.inflation_splits)).num("isolated_inflations", n(s.isolated_inflations));
   ex.num("shelled", n(s.shelled_star_shapifications)).num("base_edge_splits", n(s.base_edge_splits));
   ex.num("shelled_pushes", n(s.shelled_pushes)).num("shelled_pushes_left", n(s.shelled_pushes_left));
+  if (s.replay.ran) {
+    JsonObject rp;
+    rp.flag("handed_over", s.replay.handed_over).num("chord_splits", n(s.replay.chord_splits));
+    rp.num("shelling_attempts", n(s.replay.shelling_attempts)).num("steps", n(s.replay.steps));
+    rp.num("splits", n(s.replay.splits)).num("expansions", n(s.replay.expansions));
+    rp.num("drained", n(s.replay.drained));
+    ex.obj("replay", rp);
+  }
   add_collapse_counts(ex, s);
   ex.num("lps", n(s.lps))
       .num("lps_certified", n(s.lps_certified))

@@ -308,6 +308,7 @@ cmx::MapOptions public_options(const MapArgs& a, const algorithm::MapProblem& pr
   o.flip_collapse = in.flip_collapse;
   o.collapse_refinement = in.collapse_refinement;
   o.shelled = std::string(algorithm::to_string(in.shelled));
+  o.replay_shelling = std::string(algorithm::to_string(in.replay));
   o.check = in.check;
   o.snap = std::string(algorithm::to_string(in.snap));
   o.order = topology::to_string(in.order);

@@ -14,11 +14,14 @@ const HelpText help = {
     "usage: cmx map DOMAIN (--boundary B.txt | --codomain MESH | --shape SHAPE) [-o OUT]\n"
     "               [--format tmap,vtu,ovm,vtk,mesh,msh] [--report R.json] [--report-on-failure]\n"
     "               [--time-limit S] [--check] [--no-collapse] [--no-merge] [--no-flip-collapse]\n"
-    "               [--order priority|index|strict-index|random:SEED] [--seed N] [--corners random|farthest]\n"
+    "               [--order priority|index|strict-index|random:SEED] [--seed N] [--corners "
+    "random|farthest]\n"
     "               [--precision dyadic|shift|segment|none]\n"
-    "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm l2-upper|l1]\n"
+    "               [--filter cascade|interval|exact|mpfr:BITS] [--lp certified|exact|glpk] [--norm "
+    "l2-upper|l1]\n"
     "               [--snap repair|chebyshev-pass|nearest|none] [--trace T.csv] [--smooth N]\n"
-    "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--shelled MODE] [--subclusters N]\n"
+    "               [--arith rational|double|mpfr:BITS] [--no-collapse-refinement] [--shelled MODE] "
+    "[--subclusters N]\n"
     "               [--combinatorial] [--quiet] [--version]\n",
     "Maps the ball-topology tet mesh DOMAIN bijectively onto the star-shaped domain bounded by the\n"
     "prescribed boundary positions (Cluster-Mesh Expansion), verifies the result exactly and prints\n"
@@ -32,7 +35,8 @@ const HelpText help = {
     "a failed run are written only to paths that do not exist yet, unless --report-on-failure.\n"
     "Stuck on a NOBUENOSS (no cluster vertex satisfies Eq. (1)), the run then searches for a shelling\n"
     "of the input (8 greedy attempts), which the paper's fallback needs, and says whether it found one;\n"
-    "replaying a shelling is not built, so the exit code stays 7.\n"};
+    "the exit code stays 7. When one is found, --replay-shelling until-greedy maps by replaying it\n"
+    "from the start (paper Alg. 2); on large inputs its refinement can run away.\n"};
 
 std::string one_of(const std::string& what, const std::string& text, const std::string& choices) {
   return "unknown " + what + " '" + text + "' (" + choices + ")";
@@ -141,6 +145,14 @@ void add_run_options(CLI::App& app, MapArgs& a) {
              "star (default when-stuck: the fallback, once every candidate has failed\n"
              "everything else); after-pushes: wherever bends and pushes failed;\n"
              "first: before bends and pushes (these two are for tests and comparisons)")
+      ->type_name("MODE");
+  const auto replay = one_of_table("replay mode", algorithm::parse_replay_mode, "off, until-greedy, full");
+  add_parsed(app, "--replay-shelling", a.options.replay, replay,
+             "replay a shelling of the input from the start (paper Sec. 4.3, Alg. 2)\n"
+             "instead of expanding greedily: off (default); until-greedy, until\n"
+             "topological expansion of the cluster left completes, then the greedy\n"
+             "loop; full, every step. For a shellable input on which greedy\n"
+             "expansion ends in a NOBUENOSS (the stuck message says when)")
       ->type_name("MODE");
 }
 

@@ -22,6 +22,7 @@ JsonObject options_json(const MapArgs& a) {
   opt.num("smooth", n(o.smooth_every));
   opt.flag("collapse_refinement", o.collapse_refinement);
   opt.str("shelled", std::string(algorithm::to_string(o.shelled)));
+  opt.str("replay_shelling", std::string(algorithm::to_string(o.replay)));
   opt.flag("collapse", o.collapse);
   opt.flag("merge", o.collapse && o.merge);
   opt.flag("flip_collapse", o.collapse && o.merge && o.flip_collapse);

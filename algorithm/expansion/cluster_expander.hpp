@@ -198,6 +198,19 @@ class ClusterExpander {
   bool push_until_star_shaped(VertexId v, int k);
   bool paper_inflate(VertexId v, int depth);
   bool isolate(VertexId x);
+
+  // --- the replay of a shelling (paper Sec. 4.3, Alg. 2; shelling_replay.cpp) ----------------
+  // From the shrunk state: every chord split, a shelling found (cheapest steps first,
+  // topology::ShellingOptions::interior) and converted by Alg. 2, and each step made: a split of
+  // an all-cluster simplex at p_c, an expansion of the planned vertex with all the refinement,
+  // then the refinement's own cluster vertices drained. `stats_.replay` counts.
+  ExpansionOutcome replay_shelling();
+  void replay_split_chords();
+  bool replay_expand(VertexId v);
+  void replay_drain(const std::vector<char>& planned);
+  bool greedy_can_take_over() const;
+  ExpansionOutcome replay_failed(const std::string& why) const;
+
   Embedding& e_;
   const ExpansionSettings& s_;
   MapStatistics& stats_;

@@ -55,6 +55,7 @@ struct ExpansionSettings {
   std::size_t smooth_every = 0;   // smoothing period in expansions (0: off)
   bool collapse_after_refinement = true;  // paper Sec. 4.2.2 (MapOptions::collapse_refinement)
   ShelledMode shelled = ShelledMode::when_stuck;  // MapOptions::shelled
+  ReplayMode replay = ReplayMode::off;            // MapOptions::replay
   std::size_t subcluster_size = 4;        // largest subcluster tried (< 2: off; MapOptions::subclusters)
   // Runaway restarts (below): how many, at most; 0 turns the detection off.
   std::size_t max_restarts = 8;

@@ -35,10 +35,11 @@ ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, st
         std::to_string(v.replay_expansions) + " expansions, each satisfying Eq. (1)), but " +
         std::to_string(v.replay_empty_cone_steps) +
         " of them split a cluster edge whose cone is empty while its ends sit at the shrink point, so "
-        "replaying it geometrically is not built (docs/algorithm/expansion.md)";
+        "cmx map does not replay it on its own: --replay-shelling until-greedy replays it from the start, "
+        "but the refinement's own vertices can run away on large inputs (docs/algorithm/expansion.md)";
   else if (v.found)
     v.message = shellable + ", but Alg. 2's topological replay of it fails (" + f.message +
-                "), and replaying it geometrically is not built";
+                "), so there is no plan to replay geometrically";
   else
     v.message = "no shelling of the input found in " + std::to_string(f.attempts) +
                 " greedy attempts (at most " + std::to_string(f.best_removed) + " of " +

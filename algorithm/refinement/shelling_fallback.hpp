@@ -7,13 +7,14 @@
 // not prove that none exists, but the NOBUENOSS inputs that `cmx map` meets here (Furch's knotted
 // hole, which is not shellable, and the thin ball around Bing's house) defeat it. Bing's house in
 // a full box is shellable and meets its NOBUENOSS in topological index order, but no geometric
-// run reaches it. Replaying a shelling geometrically is not built: docs/algorithm/expansion.md
-// records why the paper's Alg. 2 does not keep the method's invariants as stated (its topological
-// half does hold with the boundary in place once every chord is split: this stage replays it,
-// topology/fixed_boundary_replay.hpp, as `cmx topo-expand` does when stuck), and the attempts
-// made. So a NOBUENOSS always ends as `stuck`;
-// this stage says whether the input is known to be shellable, which is what a user can act on
-// (a non-shellable input needs remeshing, a shellable one is a case for the missing replay).
+// run reaches it. The geometric replay of a shelling is built as an option of its own
+// (MapOptions::replay, expansion/shelling_replay.cpp: from the start, not from the stuck state)
+// and is not run here: its refinement runs away on inputs of Bing's house's size
+// (docs/algorithm/expansion.md). This stage replays the plan topologically
+// (topology/fixed_boundary_replay.hpp, as `cmx topo-expand` does when stuck), so a NOBUENOSS
+// ends as `stuck` and says whether the input is known to be shellable, which is what a user can
+// act on (a non-shellable input needs remeshing; a shellable one can be run again with
+// --replay-shelling).
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -78,6 +78,11 @@ struct MapOptions {
   // (wherever bends and pushes failed), first (before bends and pushes). The last two are for
   // tests and comparisons: they change runs that the default leaves alone, not always for better.
   std::string shelled = "when-stuck";
+  // Replay a shelling of the input from the start (paper Sec. 4.3, Alg. 2) instead of expanding
+  // greedily (cmx map --replay-shelling): off; until-greedy (until topological expansion of the
+  // cluster left completes in the default order, then the greedy loop); full (every step).
+  // For shellable inputs on which greedy expansion meets a NOBUENOSS; slower elsewhere.
+  std::string replay_shelling = "off";
   bool check = false;           // assert every invariant after every step (slow; for debugging)
   std::string snap = "repair";  // doubles written: repair, chebyshev, nearest
   std::string order = "priority";    // expansion order: priority, index, strict-index, random:SEED

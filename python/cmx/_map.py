@@ -147,7 +147,8 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
     "random:SEED", "strict-index"), filter ("cascade", "interval", "exact", "mpfr:BITS"), lp ("certified", "exact"),
     norm ("l2-upper", "l1"), precision, arith ("rational", "double", "mpfr:BITS"), subclusters (int),
     smooth (int), shelled ("when-stuck", "after-pushes", "first": when the fallback star-shapifies
-    by shelling the cone base), combinatorial (bool: V's values are ignored, T need only be
+    by shelling the cone base), replay_shelling ("off", "until-greedy", "full": replay a shelling
+    of the input from the start, paper Alg. 2), combinatorial (bool: V's values are ignored, T need only be
     oriented alike, the result realises a subdivision of the complex and its source is the target;
     give boundary positions). An unknown keyword raises TypeError.
 

@@ -72,10 +72,15 @@ const Fields<std::size_t> count_fields = {{"threads", &MapOptions::threads},
                                           {"smooth", &MapOptions::smooth}};
 const Fields<bool> bool_fields = {
     {"collapse", &MapOptions::collapse}, {"check", &MapOptions::check}, {"combinatorial", &MapOptions::combinatorial}};
-const Fields<std::string> text_fields = {
-    {"snap", &MapOptions::snap},  {"order", &MapOptions::order}, {"filter", &MapOptions::filter},
-    {"lp", &MapOptions::lp},      {"norm", &MapOptions::norm},   {"precision", &MapOptions::precision},
-    {"arith", &MapOptions::arith}, {"shelled", &MapOptions::shelled}};
+const Fields<std::string> text_fields = {{"snap", &MapOptions::snap},
+                                         {"order", &MapOptions::order},
+                                         {"filter", &MapOptions::filter},
+                                         {"lp", &MapOptions::lp},
+                                         {"norm", &MapOptions::norm},
+                                         {"precision", &MapOptions::precision},
+                                         {"arith", &MapOptions::arith},
+                                         {"shelled", &MapOptions::shelled},
+                                         {"replay_shelling", &MapOptions::replay_shelling}};
 
 template <class T, class Parse>
 bool set_field(const Fields<T>& fields, MapOptions& o, const std::string& name, py::handle value,

@@ -138,6 +138,31 @@ TEST_CASE("cmx map --shelled: the three modes run, are reported with the fallbac
   }
 }
 
+TEST_CASE(
+    "cmx map --replay-shelling: full replays every step and reports it, until-greedy hands over, a bad mode "
+    "exits 2") {
+  const Case c = make_case("grid:3,3,3", "sphere");
+  for (const char* mode : {"full", "until-greedy"}) {
+    CAPTURE(mode);
+    const std::string out = c.dir + "/replay_" + std::string(mode);
+    const auto r = run_cmx({"map", c.mesh, "--boundary", c.boundary, "-o", out, "--replay-shelling", mode,
+                            "--init", "shrink", "--check", "--report", out + ".json", "--quiet"});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const std::string report = file_text(out + ".json");
+    CHECK(report.find(std::string("\"replay_shelling\": \"") + mode + "\"") != std::string::npos);
+    const bool full = std::string(mode) == "full";
+    CHECK(report.find(std::string("\"handed_over\": ") + (full ? "false" : "true")) != std::string::npos);
+    CHECK((report.find("\"expansions\": 0,") == std::string::npos) == full);
+  }
+  for (const char* bad : {"always", "", "Full"}) {
+    CAPTURE(bad);
+    const auto r = run_cmx({"map", c.mesh, "--shape", "tet", "--replay-shelling", bad});
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--replay-shelling") != std::string::npos);
+  }
+}
+
 TEST_CASE("cmx map --trace writes a row per expansion, and cmx plot draws it") {
   const Case c = make_case("grid:3,3,3", "stiff-tet");
   const std::string trace = c.dir + "/t.csv", svg = c.dir + "/t.svg";

@@ -117,6 +117,14 @@ def test_strict_index_order(ball):
         cmx.map(V, T, shape="tet", init="shrink", order="strict_index")
 
 
+def test_replay_shelling(ball):
+    # Alg. 2 replayed from the start maps the small ball too; a misspelt mode is an error.
+    V, T = ball
+    check_map(cmx.map(V, T, shape="sphere", init="shrink", replay_shelling="full"), V, T)
+    with pytest.raises(cmx.InvalidOptions, match=r"option replay_shelling: 'always'"):
+        cmx.map(V, T, shape="sphere", replay_shelling="always")
+
+
 def test_given_initial_target(ball):
     V, T = ball
     r0 = cmx.map(V, T, shape="sphere")

@@ -1,0 +1,178 @@
+// Paper Sec. 4.3, Alg. 2 replayed geometrically: a shelling of the shrunk mesh is converted to an
+// expansion sequence and each of its steps is made with the loop's own refinement
+// (ClusterExpander::replay_shelling, docs/algorithm/expansion.md "Replaying a shelling").
+#include <string>
+#include <unordered_set>
+
+#include "algorithm/expansion/cluster_expander.hpp"
+#include "algorithm/map_error.hpp"
+#include "topology/chords.hpp"
+#include "topology/complex_queries.hpp"
+#include "topology/shelling.hpp"
+#include "topology/topological_expansion.hpp"
+
+namespace cmx::algorithm::detail {
+namespace {
+
+// How often (in replayed expansions) until_greedy asks whether greedy expansion can take over.
+constexpr std::size_t handover_check_every = 16;
+
+bool simplex_exists(const topology::TetMesh& m, const VertexId* s, int n) {
+  return n == 2 ? !topology::tets_around_edge(m, s[0], s[1]).empty()
+                : !topology::tets_around_face(m, s[0], s[1], s[2]).empty();
+}
+
+}  // namespace
+
+// Every chord first: a chord inside the remaining ball is a hole in the cluster mesh
+// (topology/fixed_boundary_replay.hpp). Each chord vertex sits at p_c, as preprocessing's do.
+void ClusterExpander::replay_split_chords() {
+  const std::size_t before = e_.num_vertices();
+  topology::ChordContext chords{
+      e_.mesh, e_.boundary, e_.unexpanded, [this](VertexId a, VertexId b, VertexId c) {
+        ++cluster_;
+        return c == topology::invalid_index ? e_.split_edge(a, b, e_.center, true)
+                                            : e_.split_face(a, b, c, e_.center, true);
+      }};
+  stats_.replay.chord_splits += topology::split_all_chords(chords);
+  for (std::size_t v = before; v < e_.num_vertices(); ++v)
+    require_valid(VertexId(static_cast<std::uint32_t>(v)), "chord split", nullptr);
+}
+
+// One cluster vertex, expanded with all the loop's refinement, then what that refinement added
+// collapsed where it can be (paper Sec. 4.2.2). The last cluster vertex goes automatically.
+bool ClusterExpander::replay_expand(VertexId v) {
+  const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
+  if (cluster_ == 1) {
+    label_ = "automatic";
+    expand_to(v, e_.center, st.manifold_k);
+    ++stats_.expansions_automatic;
+    return true;
+  }
+  if (!st.expandable) return false;
+  label_ = "replayed";
+  const std::size_t before = e_.num_vertices();
+  if (!refine_and_expand(v, 0)) return false;
+  if (s_.collapse_after_refinement) collapse_added_since(before);
+  return true;
+}
+
+// The refinement's own cluster vertices (those its pushes left), simple expansions first as the
+// loop's priority has them, one refined expansion only when no simple one is left. Until none is
+// left or none can be expanded.
+void ClusterExpander::replay_drain(const std::vector<char>& planned) {
+  while (cluster_ > 0 && !check_limits()) {
+    bool progress = false;
+    for (VertexId u{0}; u < e_.num_vertices(); ++u) {
+      if (!e_.unexpanded[u] || (u < planned.size() && planned[u])) continue;
+      const topology::ClusterVertexStatus st =
+          topology::classify_cluster_vertex(e_.mesh, u, e_.unexpanded, ws_);
+      if (st.expandable && try_simple(u, st.manifold_k)) {
+        progress = true;
+        ++stats_.replay.drained;
+      }
+    }
+    for (VertexId u{0}; u < e_.num_vertices() && !progress; ++u)
+      if (e_.unexpanded[u] && !(u < planned.size() && planned[u]) && replay_expand(u)) {
+        progress = true;
+        ++stats_.replay.drained;
+      }
+    if (!progress) return;
+  }
+}
+
+// Greedy expansion can take over when topological expansion (Eq. (1) alone) of the cluster left
+// completes in the loop's order: the replay has then led the cluster mesh past every NOBUENOSS
+// that order meets without refinement.
+bool ClusterExpander::greedy_can_take_over() const {
+  return !topology::topological_expansion(e_.mesh, s_.order, e_.unexpanded).stuck;
+}
+
+ExpansionOutcome ClusterExpander::replay_failed(const std::string& why) const {
+  return {MapOutcome::stuck,
+          "the replay of a shelling (paper Alg. 2) " + why + " (" + std::to_string(stats_.replay.expansions) +
+              " replayed expansions, " + std::to_string(stats_.replay.drained) +
+              " of the refinement's own vertices, " + std::to_string(cluster_) + " cluster vertices left)"};
+}
+
+// Why a step's split is skipped unless its simplex is all cluster vertices: a split of a simplex
+// with an expanded vertex at p_c, then the expansion of the new vertex, leaves the cluster mesh
+// (the full subcomplex of the cluster vertices) exactly as it was, since every simplex of it
+// either contains the new vertex or existed before. The same holds for boundary and free splits,
+// which make an expanded vertex at once. And the refinement only ever splits edges with an
+// expanded end, so the all-cluster simplices of the plan are never refined away: the cluster
+// mesh of the replay is the plan's (topology/fixed_boundary_replay.hpp) at every step, once the
+// refinement's own vertices are drained, and so every planned vertex satisfies Eq. (1) at its turn.
+ExpansionOutcome ClusterExpander::replay_shelling() {
+  stats_.replay = {};
+  stats_.replay.ran = true;
+  replay_split_chords();
+  topology::ShellingOptions options;
+  options.seed = 1;
+  const std::vector<char> interior = e_.unexpanded;  // every interior vertex is in the cluster now
+  options.interior = &interior;
+  options.threads = 1;
+  const topology::ShellingResult shelling = topology::find_shelling(e_.mesh, options);
+  stats_.replay.shelling_attempts = shelling.attempts;
+  if (!shelling.found) return replay_failed("found no shelling: " + shelling.message);
+  const topology::ShellingExpansion plan = topology::shelling_to_expansion_sequence(e_.mesh, shelling.order);
+  if (!plan.ok) return replay_failed("could not convert the shelling: " + plan.message);
+  stats_.replay.steps = plan.steps.size();
+  aggressive_ = shelling_round_ = true;  // every refinement the loop has, at once
+  std::vector<VertexId> geo;             // plan vertex -> vertex of the embedding (invalid: skipped)
+  for (std::size_t i = 0; i < e_.num_vertices(); ++i) geo.push_back(VertexId(static_cast<std::uint32_t>(i)));
+  std::vector<char> planned(e_.num_vertices(), 1);
+  std::size_t next_check = 0;  // replayed expansions before the next handover check
+  for (std::size_t i = 0; i < plan.steps.size() && cluster_ > 0; ++i) {
+    if (auto stop = check_limits()) return *stop;
+    if (s_.replay == ReplayMode::until_greedy && stats_.replay.expansions >= next_check) {
+      if (greedy_can_take_over()) {
+        stats_.replay.handed_over = true;
+        break;
+      }
+      next_check = stats_.replay.expansions + handover_check_every;
+    }
+    const topology::ExpansionStep& st = plan.steps[i];
+    if (st.kind != topology::ExpansionStepKind::plain_vertex) {
+      if (st.vertex.idx() != geo.size())
+        throw MapError(MapErrorKind::internal, "replay: plan numbering out of step");
+      const int n = st.kind == topology::ExpansionStepKind::edge_split ? 2 : 3;
+      VertexId s[3];
+      bool all_cluster = true;
+      for (int a = 0; a < n; ++a) {
+        s[a] = geo[st.split[a].idx()];
+        all_cluster = all_cluster && s[a] != topology::invalid_vertex && e_.unexpanded[s[a]];
+      }
+      if (!all_cluster) {
+        geo.push_back(topology::invalid_vertex);
+        continue;
+      }
+      if (!simplex_exists(e_.mesh, s, n))
+        return replay_failed("lost a simplex of its plan at step " + std::to_string(i));
+      const VertexId v = n == 2 ? e_.split_edge(s[0], s[1], e_.center, true)
+                                : e_.split_face(s[0], s[1], s[2], e_.center, true);
+      ++cluster_;
+      ++stats_.replay.splits;
+      require_valid(v, "replayed split", nullptr);
+      geo.push_back(v);
+      planned.resize(e_.num_vertices(), 0);
+      planned[v] = 1;
+    }
+    const VertexId v = geo[st.vertex.idx()];
+    if (v == topology::invalid_vertex || !e_.unexpanded[v]) continue;
+    if (!replay_expand(v))
+      return replay_failed("could not expand vertex " + std::to_string(v) + " at step " + std::to_string(i) +
+                           " of " + std::to_string(plan.steps.size()));
+    ++stats_.replay.expansions;
+    planned.resize(e_.num_vertices(), 0);
+    replay_drain(planned);
+    report_progress(false);
+  }
+  if (stats_.replay.handed_over) return {MapOutcome::success, {}};
+  replay_drain(planned);
+  if (cluster_ > 0) return replay_failed("ended with cluster vertices left");
+  report_progress(true);
+  return {MapOutcome::success, {}};
+}
+
+}  // namespace cmx::algorithm::detail
