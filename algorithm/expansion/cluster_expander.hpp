@@ -207,7 +207,14 @@ class ClusterExpander {
   ExpansionOutcome replay_shelling();
   void replay_split_chords();
   bool replay_expand(VertexId v);
-  void replay_drain(const std::vector<char>& planned);
+  // The plan's vertices: every vertex below `first` (the mesh when the plan was made) and the
+  // vertices of its splits; the others were added by the refinement.
+  struct PlannedVertices {
+    std::uint32_t first = 0;
+    std::unordered_set<VertexId> splits;
+    bool contains(VertexId v) const { return v.idx() < first || splits.count(v) > 0; }
+  };
+  void replay_drain(const PlannedVertices& planned);
   bool greedy_can_take_over() const;
   ExpansionOutcome replay_failed(const std::string& why) const;
 

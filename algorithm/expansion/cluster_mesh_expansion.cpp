@@ -36,11 +36,7 @@
 namespace cmx::algorithm::detail {
 
 ExpansionOutcome ClusterExpander::run() {
-  for (VertexId v{0}; v < e_.num_vertices(); ++v)
-    if (e_.unexpanded[v]) {
-      ++cluster_;
-      queue_.mark(v);
-    }
+  for (VertexId v{0}; v < e_.num_vertices(); ++v) cluster_ += e_.unexpanded[v] ? 1 : 0;
   if (s_.replay != ReplayMode::off) {  // paper Sec. 4.3: the plan first (shelling_replay.cpp)
     if (ExpansionOutcome planned = replay_shelling();
         planned.outcome != MapOutcome::success || cluster_ == 0) {
@@ -48,9 +44,9 @@ ExpansionOutcome ClusterExpander::run() {
       return planned;
     }
     aggressive_ = shelling_round_ = false;  // handed over: the greedy loop from here
-    for (VertexId v{0}; v < e_.num_vertices(); ++v)
-      if (e_.unexpanded[v]) queue_.mark(v);
   }
+  for (VertexId v{0}; v < e_.num_vertices(); ++v)
+    if (e_.unexpanded[v]) queue_.mark(v);
   classify_marked();
   if (watch_runaway_) checkpoint_ = Checkpoint{e_, stats_, cluster_};
   while (cluster_ > 0) {

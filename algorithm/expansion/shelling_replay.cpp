@@ -59,12 +59,14 @@ bool ClusterExpander::replay_expand(VertexId v) {
 
 // The refinement's own cluster vertices (those its pushes left), simple expansions first as the
 // loop's priority has them, one refined expansion only when no simple one is left. Until none is
-// left or none can be expanded.
-void ClusterExpander::replay_drain(const std::vector<char>& planned) {
+// left or none can be expanded. Every vertex below `planned.first` is the plan's, so the scans
+// start there.
+void ClusterExpander::replay_drain(const PlannedVertices& planned) {
+  const auto own = [&](VertexId u) { return e_.unexpanded[u] && !planned.contains(u); };
   while (cluster_ > 0 && !check_limits()) {
     bool progress = false;
-    for (VertexId u{0}; u < e_.num_vertices(); ++u) {
-      if (!e_.unexpanded[u] || (u < planned.size() && planned[u])) continue;
+    for (VertexId u{planned.first}; u < e_.num_vertices(); ++u) {
+      if (!own(u)) continue;
       const topology::ClusterVertexStatus st =
           topology::classify_cluster_vertex(e_.mesh, u, e_.unexpanded, ws_);
       if (st.expandable && try_simple(u, st.manifold_k)) {
@@ -72,8 +74,8 @@ void ClusterExpander::replay_drain(const std::vector<char>& planned) {
         ++stats_.replay.drained;
       }
     }
-    for (VertexId u{0}; u < e_.num_vertices() && !progress; ++u)
-      if (e_.unexpanded[u] && !(u < planned.size() && planned[u]) && replay_expand(u)) {
+    for (VertexId u{planned.first}; u < e_.num_vertices() && !progress; ++u)
+      if (own(u) && replay_expand(u)) {
         progress = true;
         ++stats_.replay.drained;
       }
@@ -107,11 +109,9 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
   stats_.replay = {};
   stats_.replay.ran = true;
   replay_split_chords();
-  topology::ShellingOptions options;
-  options.seed = 1;
+  topology::ShellingOptions options;  // one seeded attempt series on this thread, as its defaults say
   const std::vector<char> interior = e_.unexpanded;  // every interior vertex is in the cluster now
   options.interior = &interior;
-  options.threads = 1;
   const topology::ShellingResult shelling = topology::find_shelling(e_.mesh, options);
   stats_.replay.shelling_attempts = shelling.attempts;
   if (!shelling.found) return replay_failed("found no shelling: " + shelling.message);
@@ -121,7 +121,7 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
   aggressive_ = shelling_round_ = true;  // every refinement the loop has, at once
   std::vector<VertexId> geo;             // plan vertex -> vertex of the embedding (invalid: skipped)
   for (std::size_t i = 0; i < e_.num_vertices(); ++i) geo.push_back(VertexId(static_cast<std::uint32_t>(i)));
-  std::vector<char> planned(e_.num_vertices(), 1);
+  PlannedVertices planned{static_cast<std::uint32_t>(e_.num_vertices()), {}};
   std::size_t next_check = 0;  // replayed expansions before the next handover check
   for (std::size_t i = 0; i < plan.steps.size() && cluster_ > 0; ++i) {
     if (auto stop = check_limits()) return *stop;
@@ -155,8 +155,7 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
       ++stats_.replay.splits;
       require_valid(v, "replayed split", nullptr);
       geo.push_back(v);
-      planned.resize(e_.num_vertices(), 0);
-      planned[v] = 1;
+      planned.splits.insert(v);
     }
     const VertexId v = geo[st.vertex.idx()];
     if (v == topology::invalid_vertex || !e_.unexpanded[v]) continue;
@@ -164,7 +163,6 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
       return replay_failed("could not expand vertex " + std::to_string(v) + " at step " + std::to_string(i) +
                            " of " + std::to_string(plan.steps.size()));
     ++stats_.replay.expansions;
-    planned.resize(e_.num_vertices(), 0);
     replay_drain(planned);
     report_progress(false);
   }
