@@ -7,8 +7,9 @@
 //   bings-house[:S]    a ball whose cluster mesh is Bing's house (a NOBUENOSS), S cells per unit
 //   bings-house-box[:S] the same house in a full box, its vertices numbered last (shellable;
 //                      greedy `index` order meets the house as a NOBUENOSS), S even, default 2
-//   knotted-hole[:S]   Furch's knotted hole, S cells per lattice unit (its cluster mesh erodes to a NOBUENOSS)
-//   fingers:F,W,L      a palm with F bent fingers of W x W cells and length L (thin parts)
+//   compact-bings-house-box[:S] the same with a compact house (5 times fewer tets)
+//   knotted-hole[:S]   Furch's knotted hole, S cells per lattice unit (its cluster mesh erodes to a
+//   NOBUENOSS) fingers:F,W,L      a palm with F bent fingers of W x W cells and length L (thin parts)
 // --perturb SEED jitters every vertex by a dyadic offset of at most A (default 0.25) per axis,
 // keeping only offsets after which all its tets stay strictly positive (exact). OUT's extension
 // picks the format (io::write_tet_mesh): .ovm keeps the exact positions (as "str_exact_position";
@@ -56,13 +57,15 @@ std::optional<std::vector<std::uint32_t>> parse_dimensions(std::string_view text
 }
 
 struct ShapeRequest {
-  char kind = 0;  // 'g' grid, 'b' ball, 's' slab, 'h' Bing's house, 'H' in a box, 'k' knotted hole, 'f' fingers
+  char kind = 0;  // 'g' grid, 'b' ball, 's' slab, 'h' Bing's house, 'H' in a box, 'C' compact in a box,
+                  // 'k' knotted hole, 'f' fingers
   std::vector<std::uint32_t> dims;
 };
 
 std::optional<ShapeRequest> parse_shape(const std::string& text) {
   if (text == "bings-house") return ShapeRequest{'h', {4}};
   if (text == "bings-house-box") return ShapeRequest{'H', {2}};
+  if (text == "compact-bings-house-box") return ShapeRequest{'C', {2}};
   if (text == "knotted-hole") return ShapeRequest{'k', {1}};
   const auto colon = text.find(':');
   if (colon == std::string::npos) return std::nullopt;
@@ -74,6 +77,7 @@ std::optional<ShapeRequest> parse_shape(const std::string& text) {
   if (name == "ball" && n == 1) return ShapeRequest{'b', *dims};
   if (name == "bings-house" && n == 1) return ShapeRequest{'h', *dims};
   if (name == "bings-house-box" && n == 1) return ShapeRequest{'H', *dims};
+  if (name == "compact-bings-house-box" && n == 1) return ShapeRequest{'C', *dims};
   if (name == "knotted-hole" && n == 1) return ShapeRequest{'k', *dims};
   if (name == "fingers" && n == 3) return ShapeRequest{'f', *dims};
   if (name == "slab" && (n == 2 || (n == 3 && (*dims)[2] <= 2))) return ShapeRequest{'s', *dims};
@@ -84,6 +88,8 @@ std::uint64_t cell_count(const ShapeRequest& s) {
   const auto& d = s.dims;
   if (s.kind == 'b') return 8 * std::uint64_t{d[0]} * d[0] * d[0];  // the bounding grid
   if (s.kind == 'h' || s.kind == 'H') return 400 * std::uint64_t{d[0]} * d[0] * d[0];  // the bounding box, roughly
+  if (s.kind == 'C')
+    return (5 * std::uint64_t{d[0]} + 4) * (3 * std::uint64_t{d[0]} + 4) * (2 * std::uint64_t{d[0]} + 4);
   if (s.kind == 'k') return 12'000 * std::uint64_t{d[0]} * d[0] * d[0];  // the bounding box, about
   if (s.kind == 'f') return (2 * std::uint64_t{d[0]} + 1) * d[1] * (4 * std::uint64_t{d[1]} + d[2] + 2) * (4 * std::uint64_t{d[1]} + d[2]);
   std::uint64_t cells = std::uint64_t{d[0]} * d[1];
@@ -101,8 +107,10 @@ void add_options(CLI::App& app, GenerateArgs& a) {
   const auto shape = [&a](const std::string& text) {
     const auto s = parse_shape(text);
     if (!s)
-      throw std::invalid_argument("bad shape '" + text +
-                                  "' (grid:NX,NY,NZ, ball:R, slab:NX,NY[,1|2], bings-house[:S], bings-house-box[:S], knotted-hole[:S] or fingers:F,W,L)");
+      throw std::invalid_argument(
+          "bad shape '" + text +
+          "' (grid:NX,NY,NZ, ball:R, slab:NX,NY[,1|2], bings-house[:S], bings-house-box[:S], "
+          "compact-bings-house-box[:S], knotted-hole[:S] or fingers:F,W,L)");
     if (cell_count(*s) > max_cells) throw std::invalid_argument("'" + text + "' has more than " + std::to_string(max_cells) + " cells");
     a.shape_text = text;
     return *s;
@@ -117,6 +125,8 @@ void add_options(CLI::App& app, GenerateArgs& a) {
              "bings-house-box[:S] (the house in a full box, S even in [2,64],\n"
              "default 2: shellable, its house vertices numbered last, so that\n"
              "greedy expansion in index order meets the house as a NOBUENOSS);\n"
+             "compact-bings-house-box[:S] (the same with a compact house, 6720\n"
+             "tets at S = 2, the last 309 vertices on the house);\n"
              "fingers:F,W,L (a palm with F bent fingers of W x W cells, length L;\n"
              "F 1-16, W 2-8, L 1-400); at most 2000000 cells (of the bounding grid)")
       ->type_name("SHAPE")
@@ -147,6 +157,8 @@ generators::GeneratedDomain generate(const GenerateArgs& a) {
       case 'b': return generators::voxel_ball(d[0], seed, amplitude);
       case 'h': return generators::bings_house(d[0], seed, amplitude);
       case 'H': return generators::bings_house_box(d[0], seed, amplitude);
+      case 'C':
+        return generators::compact_bings_house_box(d[0], seed, amplitude);
       case 'k': return generators::knotted_hole(seed, amplitude, d[0]);
       case 'f': return generators::thin_fingers(d[0], d[1], d[2], seed, amplitude);
       default: return generators::thin_slab(d[0], d[1], seed, d.size() == 3 ? d[2] : 1, amplitude);

@@ -138,6 +138,13 @@ GeneratedDomain bings_house_box(std::uint32_t scale, std::uint64_t perturb_seed,
   return perturbed(topology::bings_house_in_box(scale), perturb_seed, amplitude);
 }
 
+GeneratedDomain compact_bings_house_box(std::uint32_t scale, std::uint64_t perturb_seed, double amplitude) {
+  if (scale < 2 || scale % 2 != 0 || scale > 64)
+    throw std::invalid_argument("compact_bings_house_box: the scale must be even, at least 2 and at most 64");
+  check_amplitude(amplitude, "compact_bings_house_box");
+  return perturbed(topology::compact_bings_house_in_box(scale), perturb_seed, amplitude);
+}
+
 GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude, std::uint32_t scale) {
   if (scale < 1 || scale > 5) throw std::invalid_argument("knotted_hole: the scale must be 1 to 5");
   check_amplitude(amplitude, "knotted_hole");

@@ -15,6 +15,7 @@
 //   bings_house     topology::bings_house_nobuenoss: a voxel ball whose interior vertices span
 //                   Bing's house, so the cluster mesh is a NOBUENOSS from the start.
 //   bings_house_box topology::bings_house_in_box: the same house in a full (shellable) box.
+//   compact_bings_house_box topology::compact_bings_house_in_box: a compact house, in a box.
 //   knotted_hole    topology::knotted_hole_ball: Furch's knotted hole, whose cluster mesh erodes
 //                   to a NOBUENOSS under greedy expansion.
 //   thin_fingers    a hand: a palm of (2F+1)W x 4W x 4W cells with F fingers of W x W cells and
@@ -71,6 +72,9 @@ inline constexpr double default_perturb_amplitude = 0.25;
 // `index` order meets it as a NOBUENOSS; the box is shellable). scale: even, 2 to 64.
 [[nodiscard]] GeneratedDomain bings_house_box(std::uint32_t scale, std::uint64_t perturb_seed,
                                               double amplitude = default_perturb_amplitude);
+// topology::compact_bings_house_in_box: the same with a compact house. scale: even, 2 to 64.
+[[nodiscard]] GeneratedDomain compact_bings_house_box(std::uint32_t scale, std::uint64_t perturb_seed,
+                                                      double amplitude = default_perturb_amplitude);
 // scale: cells per lattice unit, 1 to 5 (std::invalid_argument otherwise): the same solid meshed
 // scale^3 times more finely.
 [[nodiscard]] GeneratedDomain knotted_hole(std::uint64_t perturb_seed, double amplitude = default_perturb_amplitude,

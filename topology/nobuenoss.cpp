@@ -139,17 +139,59 @@ std::vector<Sheet> bings_house_sheets() {
   return sheets;
 }
 
+// The same two rooms in the smallest box the lattice allows: [0,5]x[0,3]x[0,2], floor z=1, tube
+// T1 (x in [1,2], y in [1,2]) from below, T2 (x in [3,4], y in [1,2]) from above, the walls in
+// the tubes' side planes (W1: y=1, x in [0,1], lower room; W2: y=2, x in [4,5], upper room). A
+// room is one design unit high, so at 2 cells per unit one layer of grid points lies inside it.
+std::vector<Sheet> compact_house_sheets() {
+  std::vector<Sheet> sheets;
+  sheets.push_back({2, 0, {0, 0}, {5, 3}, {{1, 1, 2, 2}}});                // bottom, hole under T1
+  sheets.push_back({2, 2, {0, 0}, {5, 3}, {{3, 1, 4, 2}}});                // top, hole over T2
+  sheets.push_back({2, 1, {0, 0}, {5, 3}, {{1, 1, 2, 2}, {3, 1, 4, 2}}});  // floor
+  sheets.push_back({0, 0, {0, 0}, {3, 2}, {}});                            // x = 0
+  sheets.push_back({0, 5, {0, 0}, {3, 2}, {}});                            // x = 5
+  sheets.push_back({1, 0, {0, 0}, {5, 2}, {}});                            // y = 0
+  sheets.push_back({1, 3, {0, 0}, {5, 2}, {}});                            // y = 3
+  // Tube T1 walls, z in [0,1].
+  sheets.push_back({0, 1, {1, 0}, {2, 1}, {}});
+  sheets.push_back({0, 2, {1, 0}, {2, 1}, {}});
+  sheets.push_back({1, 1, {1, 0}, {2, 1}, {}});
+  sheets.push_back({1, 2, {1, 0}, {2, 1}, {}});
+  // Tube T2 walls, z in [1,2].
+  sheets.push_back({0, 3, {1, 1}, {2, 2}, {}});
+  sheets.push_back({0, 4, {1, 1}, {2, 2}, {}});
+  sheets.push_back({1, 1, {3, 1}, {4, 2}, {}});
+  sheets.push_back({1, 2, {3, 1}, {4, 2}, {}});
+  // Supporting walls.
+  sheets.push_back({1, 1, {0, 0}, {1, 1}, {}});
+  sheets.push_back({1, 2, {4, 1}, {5, 2}, {}});
+  return sheets;
+}
+
+struct HouseDesign {
+  std::vector<Sheet> sheets;
+  std::int64_t x, y, z;  // the box, in design units
+};
+
+HouseDesign two_room_house() {
+  return {bings_house_sheets(), 10, 4, 8};
+}
+HouseDesign compact_house() {
+  return {compact_house_sheets(), 5, 3, 2};
+}
+
 // The house at `unit` grid cells per design unit, offset by `off` cells on each side.
 struct HouseGrid {
-  std::vector<Sheet> sheets = bings_house_sheets();
+  std::vector<Sheet> sheets;
   std::int64_t unit, off;
   std::uint32_t nx, ny, nz;  // cells
-  HouseGrid(std::int64_t u, std::int64_t o)
-      : unit(u),
+  HouseGrid(const HouseDesign& d, std::int64_t u, std::int64_t o)
+      : sheets(d.sheets),
+        unit(u),
         off(o),
-        nx(static_cast<std::uint32_t>(10 * u + 2 * o)),
-        ny(static_cast<std::uint32_t>(4 * u + 2 * o)),
-        nz(static_cast<std::uint32_t>(8 * u + 2 * o)) {}
+        nx(static_cast<std::uint32_t>(d.x * u + 2 * o)),
+        ny(static_cast<std::uint32_t>(d.y * u + 2 * o)),
+        nz(static_cast<std::uint32_t>(d.z * u + 2 * o)) {}
   bool on_house(std::int64_t i, std::int64_t j, std::int64_t k) const {
     const std::array<std::int64_t, 3> p{i - off, j - off, k - off};
     for (const Sheet& s : sheets)
@@ -163,7 +205,7 @@ struct HouseGrid {
 GridComplex bings_house_nobuenoss(std::uint32_t scale) {
   // One cell of margin on each side; the offset is 2 so that design points stay at even grid
   // coordinates (the reflected triangulation then puts a face diagonal through every crease).
-  const HouseGrid h(std::max<std::uint32_t>(scale, 4) & ~1u, 2);
+  const HouseGrid h(two_room_house(), std::max<std::uint32_t>(scale, 4) & ~1u, 2);
   // Keep exactly the cells with a corner on the house: the house points are then the interior
   // vertices (features are >= 4 cells apart, so no other point has all 8 cells kept).
   std::vector<char> keep(std::size_t{h.nx} * h.ny * h.nz, 0);
@@ -177,8 +219,9 @@ GridComplex bings_house_nobuenoss(std::uint32_t scale) {
   return voxel_complex(h.nx, h.ny, h.nz, keep, GridTriangulation::reflected);
 }
 
-GridComplex bings_house_in_box(std::uint32_t scale, std::size_t* house_vertices) {
-  const HouseGrid h(std::max<std::uint32_t>(scale, 2) & ~1u, 2);
+namespace {
+
+GridComplex house_in_box(const HouseGrid& h, std::size_t* house_vertices) {
   GridComplex box = voxel_complex(h.nx, h.ny, h.nz, {}, GridTriangulation::reflected);
   // Renumber: the vertices off the house first, the house's last, each in grid order.
   const std::size_t n = box.coords.size();
@@ -205,6 +248,17 @@ GridComplex bings_house_in_box(std::uint32_t scale, std::size_t* house_vertices)
   out.mesh = TetMesh(n, tets);
   if (house_vertices) *house_vertices = count;
   return out;
+}
+
+}  // namespace
+
+GridComplex bings_house_in_box(std::uint32_t scale, std::size_t* house_vertices) {
+  return house_in_box(HouseGrid(two_room_house(), std::max<std::uint32_t>(scale, 2) & ~1u, 2),
+                      house_vertices);
+}
+
+GridComplex compact_bings_house_in_box(std::uint32_t scale, std::size_t* house_vertices) {
+  return house_in_box(HouseGrid(compact_house(), std::max<std::uint32_t>(scale, 2) & ~1u, 2), house_vertices);
 }
 
 }  // namespace cmx::topology

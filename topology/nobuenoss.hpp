@@ -42,5 +42,11 @@ namespace cmx::topology {
 // how many vertices lie on the house (the last ids). The paper's shelling fallback (Sec. 4.3)
 // applies to it; docs/algorithm/expansion.md says what replaying a shelling does here.
 [[nodiscard]] GridComplex bings_house_in_box(std::uint32_t scale = 2, std::size_t* house_vertices = nullptr);
+// The same construction for a compact Bing's house (box 5x3x2 design units, rooms one unit
+// high): 6,720 tets and 1,485 vertices at scale 2 (the two-room house in its box has 34,560),
+// the last 309 on the house. Shellable the same way; greedy expansion in `index` order, or in
+// any order with the house deferred (ExpansionOrder::deferred), meets the house as a NOBUENOSS.
+[[nodiscard]] GridComplex compact_bings_house_in_box(std::uint32_t scale = 2,
+                                                     std::size_t* house_vertices = nullptr);
 
 }  // namespace cmx::topology
