@@ -62,7 +62,14 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
   if (!filter || filter->kind == FilterPolicy::Kind::naive)
     return bad("filter", in.filter, filter ? "is not exact (naive is for benchmarks only)" : why);
   const auto order = topology::parse_expansion_order(in.order);
-  if (!order) return bad("order", in.order, "is not an expansion order (priority, index, random:SEED)");
+  if (!order)
+    return bad("order", in.order,
+               "is not an expansion order (priority, index, strict-index, random:SEED; optionally followed "
+               "by ,defer:A-B)");
+  if (order->defer_first < order->defer_end && in.init != InitialMap::shrink)
+    return bad(
+        "order", in.order,
+        "defers input vertex ids, which only --init shrink keeps (the local repair's stars renumber them)");
   const auto shelled = algorithm::parse_shelled_mode(in.shelled);
   if (!shelled) return bad("shelled", in.shelled, "is not a shelled star-shapification mode (when-stuck, after-pushes, first)");
   const auto replay = algorithm::parse_replay_mode(in.replay_shelling);

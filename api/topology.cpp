@@ -86,7 +86,7 @@ TopologicalExpansion expand_topologically(std::span<const Tet> tets, std::size_t
   const auto parsed = topology::parse_expansion_order(order);
   if (!parsed)
     throw Error("expand_topologically: unknown order '" + std::string(order) +
-                "' (priority, index or random:SEED)");
+                "' (priority, index, strict-index or random:SEED, optionally followed by ,defer:A-B)");
   const topology::TetMesh mesh = ball_mesh("expand_topologically", tets, vertex_count);
   const std::vector<char> unexpanded = cluster_flags("expand_topologically", mesh, cluster_vertices);
   const topology::SubcomplexCounts initial = topology::cluster_mesh_counts(mesh, unexpanded);

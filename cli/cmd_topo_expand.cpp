@@ -98,6 +98,7 @@ TetMesh builtin_mesh(const std::string& name) {
   if (name == "unknotted-hole") return topology::unknotted_hole_ball().mesh;
   if (name == "bings-house") return topology::bings_house_nobuenoss().mesh;
   if (name == "bings-house-box") return topology::bings_house_in_box().mesh;
+  if (name == "compact-bings-house-box") return topology::compact_bings_house_in_box().mesh;
   if (name.rfind("grid:", 0) == 0) {
     if (const auto n = parse_grid_size(name.substr(5)))
       return topology::grid_complex((*n)[0], (*n)[1], (*n)[2]).mesh;
@@ -105,7 +106,8 @@ TetMesh builtin_mesh(const std::string& name) {
                 std::to_string(max_builtin_tets) + " tets)");
   }
   usage_error("--builtin: unknown builtin '" + name +
-              "' (knotted-hole, unknotted-hole, bings-house, bings-house-box, grid:NX,NY,NZ)");
+              "' (knotted-hole, unknotted-hole, bings-house, bings-house-box, compact-bings-house-box, "
+              "grid:NX,NY,NZ)");
 }
 
 void print_fallback_json(const std::optional<topology::ShellingFallback>& f) {
@@ -225,13 +227,15 @@ int run(const std::vector<std::string>& args) {
                  "a complex built in memory instead of MESH: knotted-hole (Furch's ball\n"
                  "with a knotted hole: gets stuck), unknotted-hole (its control),\n"
                  "bings-house, bings-house-box (the house in a shellable box, stuck on\n"
-                 "the house in index order only), grid:NX,NY,NZ (Freudenthal grid of\n"
-                 "NX*NY*NZ cells, 6 tets each)")
+                 "the house in index order only), compact-bings-house-box (the same,\n"
+                 "compact: 6720 tets, the house on ids 1176-1484), grid:NX,NY,NZ\n"
+                 "(Freudenthal grid of NX*NY*NZ cells, 6 tets each)")
       ->type_name("NAME");
   add_order_option(app, order,
                    "priority (default: k = 1, 2, 3, other; then more expanded neighbours;\n"
                    "then lower id), index (lowest id; strict-index is the same here),\n"
-                   "random:SEED (seeded permutation)");
+                   "random:SEED (seeded permutation); any of them followed by\n"
+                   "',defer:A-B' expands ids A to B-1 only when no other vertex can be");
   app.add_option("--fallback", fallback_name,
                  "shelling (default: when stuck, look for a shelling of the mesh and replay\n"
                  "it by Alg. 2 from the start, boundary in place), always (the same even\n"

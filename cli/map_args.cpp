@@ -200,11 +200,14 @@ void add_expansion_options(CLI::App& app, MapArgs& a) {
              "last expansions toward their neighbours' centroid where every tet\n"
              "keeps its state (paper Sec. 4.2.4; default 0: off; at most 1000000)")
       ->type_name("N");
-  add_order_option(app, a.options.order, "expansion order: priority (default: paper Sec. 4.1.2), index (the\n"
+  add_order_option(app, a.options.order,
+                   "expansion order: priority (default: paper Sec. 4.1.2), index (the\n"
                    "class first, then the lowest id), random:SEED, strict-index (the\n"
                    "lowest id first, refined if need be: the order of cmx topo-expand\n"
                    "--order index, for experiments; it forces refinement where the\n"
-                   "others would expand simply and is much slower)");
+                   "others would expand simply and is much slower); any of them followed\n"
+                   "by ',defer:A-B' (for experiments) expands the input's vertex ids A to\n"
+                   "B-1 only when no other cluster vertex can be expanded, refined or not");
   const auto precision =
       one_of_table("precision policy", algorithm::parse_precision_policy, "dyadic, shift, segment, none");
   add_parsed(app, "--precision", a.options.placement.precision, precision,

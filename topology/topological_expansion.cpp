@@ -11,7 +11,38 @@
 
 namespace cmx::topology {
 
+namespace {
+
+std::optional<std::uint32_t> parse_id(std::string_view digits) {
+  std::uint32_t id = 0;
+  const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), id);
+  if (digits.empty() || ec != std::errc{} || ptr != digits.data() + digits.size()) return std::nullopt;
+  return id;
+}
+
+std::optional<ExpansionOrder> parse_base_order(std::string_view text);
+
+}  // namespace
+
 std::optional<ExpansionOrder> parse_expansion_order(std::string_view text) {
+  constexpr std::string_view defer = ",defer:";
+  const std::size_t at = text.find(defer);
+  if (at == std::string_view::npos) return parse_base_order(text);
+  std::optional<ExpansionOrder> order = parse_base_order(text.substr(0, at));
+  const std::string_view range = text.substr(at + defer.size());
+  const std::size_t dash = range.find('-');
+  if (!order || dash == std::string_view::npos) return std::nullopt;
+  const std::optional<std::uint32_t> first = parse_id(range.substr(0, dash)),
+                                     end = parse_id(range.substr(dash + 1));
+  if (!first || !end || *first >= *end) return std::nullopt;
+  order->defer_first = *first;
+  order->defer_end = *end;
+  return order;
+}
+
+namespace {
+
+std::optional<ExpansionOrder> parse_base_order(std::string_view text) {
   if (text == "priority") return ExpansionOrder{ExpansionOrderKind::priority, 0};
   if (text == "index") return ExpansionOrder{ExpansionOrderKind::index, 0};
   if (text == "strict-index") return ExpansionOrder{ExpansionOrderKind::strict_index, 0};
@@ -26,7 +57,7 @@ std::optional<ExpansionOrder> parse_expansion_order(std::string_view text) {
   return std::nullopt;
 }
 
-std::string to_string(const ExpansionOrder& order) {
+std::string base_name(const ExpansionOrder& order) {
   switch (order.kind) {
     case ExpansionOrderKind::priority: return "priority";
     case ExpansionOrderKind::index: return "index";
@@ -34,6 +65,14 @@ std::string to_string(const ExpansionOrder& order) {
     case ExpansionOrderKind::random: return "random:" + std::to_string(order.seed);
   }
   return "?";
+}
+
+}  // namespace
+
+std::string to_string(const ExpansionOrder& order) {
+  if (order.defer_first >= order.defer_end) return base_name(order);
+  return base_name(order) + ",defer:" + std::to_string(order.defer_first) + "-" +
+         std::to_string(order.defer_end);
 }
 
 namespace {
@@ -106,16 +145,20 @@ class GreedyExpansion {
   }
 
  private:
+  // The top bit puts deferred vertices after all others; every order's key fits below it.
   std::uint64_t key_of(VertexId v, const ClusterVertexStatus& st) const {
+    const std::uint64_t deferred = order_.deferred(v) ? std::uint64_t{1} << 63 : 0;
     switch (order_.kind) {
       case ExpansionOrderKind::index:
-      case ExpansionOrderKind::strict_index: return v;
-      case ExpansionOrderKind::random: return rank_[v];
+      case ExpansionOrderKind::strict_index:
+        return deferred | v;
+      case ExpansionOrderKind::random:
+        return deferred | rank_[v];
       case ExpansionOrderKind::priority: break;
     }
     const std::uint64_t cls = st.manifold_k == 0 ? 3 : static_cast<std::uint64_t>(st.manifold_k - 1);
     const std::uint64_t fewer = 0xffffu - std::min<std::uint32_t>(st.expanded_neighbors, 0xffffu);
-    return (cls << 48) | (fewer << 32) | v;
+    return deferred | (cls << 48) | (fewer << 32) | v;
   }
 
   void evaluate(VertexId v) {

@@ -11,6 +11,8 @@
 //              before the class (algorithm/expansion/candidate_queue.hpp).
 //   random:S : the expandable vertex first in a random permutation of the vertices drawn from
 //              std::mt19937_64(S) (Fisher-Yates with our own bounded draw: platform-independent).
+//   ,defer:A-B after any of them: the vertices with ids in [A, B) only when no other is
+//              expandable (ExpansionOrder::deferred).
 // After each expansion only the unexpanded neighbours of the expanded vertex are re-evaluated
 // (lazy-deletion priority queue). A cluster vertex whose Lk• became empty (an isolated cluster
 // vertex, e.g. the last one) is expanded automatically (paper Sec. 3).
@@ -33,9 +35,16 @@ enum class ExpansionOrderKind : std::uint8_t { priority, index, random, strict_i
 struct ExpansionOrder {
   ExpansionOrderKind kind = ExpansionOrderKind::priority;
   std::uint64_t seed = 0;  // random only
+  // Vertices with ids in [defer_first, defer_end) come after every other expandable vertex, in
+  // the same order among themselves: how an experiment steers expansion into a configuration it
+  // built (bings_house_in_box numbers its house last). Empty by default.
+  std::uint32_t defer_first = 0, defer_end = 0;
+  [[nodiscard]] bool deferred(VertexId v) const { return v.idx() >= defer_first && v.idx() < defer_end; }
 };
 
-// "priority", "index" or "random:SEED" (SEED a decimal uint64). nullopt when malformed.
+// "priority", "index", "strict-index" or "random:SEED" (SEED a decimal uint64), optionally
+// followed by ",defer:A-B" (decimal ids, A < B: the range [A, B) is deferred). nullopt when
+// malformed.
 [[nodiscard]] std::optional<ExpansionOrder> parse_expansion_order(std::string_view text);
 [[nodiscard]] std::string to_string(const ExpansionOrder& order);
 

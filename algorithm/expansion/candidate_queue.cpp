@@ -66,6 +66,14 @@ std::int64_t CandidateQueue::random_rank(VertexId v) const {
 // first is what can leave a NOBUENOSS.
 std::array<std::int64_t, 4> CandidateQueue::key(Kind kind, int k, std::uint32_t expanded_neighbors,
                                                 VertexId v) const {
+  std::array<std::int64_t, 4> r = order_key(kind, k, expanded_neighbors, v);
+  // A deferred vertex comes after every other, refined ones included (ExpansionOrder::deferred).
+  if (order_.deferred(v)) r[0] += std::int64_t{1} << 40;
+  return r;
+}
+
+std::array<std::int64_t, 4> CandidateQueue::order_key(Kind kind, int k, std::uint32_t expanded_neighbors,
+                                                      VertexId v) const {
   if (planned_ > 0) {
     const std::int64_t r = kind == Kind::automatic || v >= planned_ ? 0 : std::int64_t(v) + 1;
     const std::int64_t tie = order_.kind == topology::ExpansionOrderKind::random ? random_rank(v) : v;

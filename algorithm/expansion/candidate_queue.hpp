@@ -1,10 +1,10 @@
 #pragma once
 // The candidates of paper Alg. 1 line 5: the cluster vertices by class, then by the order of
-// Sec. 4.1.2 (or `index`, `random:SEED`); in the planned order `strict-index` by vertex id first
-// and class second. In a priority queue with lazy deletion (an entry is stale
-// once its vertex's version has moved on, or once the vertex left the cluster), and the set of
-// vertices whose star changed since they were last classified. Classification itself, which needs
-// the cones and the LPs, is the loop's (ClusterExpander::evaluate, cluster_expansion.cpp).
+// Sec. 4.1.2 (or `index`, `random:SEED`), deferred vertices after all others; in the planned order
+// `strict-index` by vertex id first and class second. In a priority queue with lazy deletion (an entry is
+// stale once its vertex's version has moved on, or once the vertex left the cluster), and the set of vertices
+// whose star changed since they were last classified. Classification itself, which needs the cones and the
+// LPs, is the loop's (ClusterExpander::evaluate, cluster_expansion.cpp).
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -52,6 +52,8 @@ class CandidateQueue {
  private:
   [[nodiscard]] std::array<std::int64_t, 4> key(Kind kind, int k, std::uint32_t expanded_neighbors,
                                                 VertexId v) const;
+  [[nodiscard]] std::array<std::int64_t, 4> order_key(Kind kind, int k, std::uint32_t expanded_neighbors,
+                                                      VertexId v) const;
   [[nodiscard]] std::int64_t random_rank(VertexId v) const;  // v's place in the seeded permutation
 
   const Embedding& e_;

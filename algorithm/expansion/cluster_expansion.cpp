@@ -303,7 +303,7 @@ bool ClusterExpander::expand_subcluster(VertexId v) {
   SubclusterCounters counters;
   const auto began = std::chrono::steady_clock::now();
   std::optional<std::vector<SubclusterMove>> plan =
-      plan_subcluster(e_, v, s_.subcluster_size, s_.placement, ws_, counters);
+      plan_subcluster(e_, v, s_.subcluster_size, s_.placement, ws_, counters, s_.order);
   stats_.seconds_subcluster_search +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   stats_.subcluster_candidates += counters.candidates;
@@ -386,7 +386,9 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
     e = std::move(back->embedding);
     stats = std::move(back->stats);
     stats.expansion_restarts = restart + 1;
-    s.order = topology::ExpansionOrder{topology::ExpansionOrderKind::random, restart + 1};
+    // Another order, the same deferral: a deferred range is the experiment's, not the order's.
+    s.order = topology::ExpansionOrder{topology::ExpansionOrderKind::random, restart + 1, s.order.defer_first,
+                                       s.order.defer_end};
     // A restart means the refinement churned; smoothing (paper Sec. 4.2.4) re-centres the
     // expanded vertices whose placement makes later cones empty.
     if (s.smooth_every == 0) s.smooth_every = tuning::restart_smooth_every;

@@ -111,8 +111,8 @@ ExpansionCone coincidence_cone(const Embedding& e, const std::vector<VertexId>& 
   return cone;
 }
 
-std::vector<std::vector<VertexId>> subcluster_candidates(const Embedding& e, VertexId v,
-                                                         std::size_t max_size) {
+std::vector<std::vector<VertexId>> subcluster_candidates(const Embedding& e, VertexId v, std::size_t max_size,
+                                                         const topology::ExpansionOrder& order) {
   // Cluster neighbours of v and how many of v's side tets (v and exactly one other cluster vertex)
   // each is in.
   std::map<VertexId, int> side;
@@ -120,7 +120,8 @@ std::vector<std::vector<VertexId>> subcluster_candidates(const Embedding& e, Ver
     const topology::Tet& tet = e.mesh.tet(t);
     const int others = e.unexpanded_count(tet) - 1;
     for (VertexId w : tet)
-      if (w != v && e.unexpanded[w]) side[w] += others == 1 ? 1 : 0;
+      if (w != v && e.unexpanded[w] && (!order.deferred(w) || order.deferred(v)))
+        side[w] += others == 1 ? 1 : 0;
   }
   std::vector<std::pair<int, VertexId>> ranked;
   for (const auto& [w, n] : side) ranked.emplace_back(-n, w);
@@ -144,8 +145,9 @@ std::vector<std::vector<VertexId>> subcluster_candidates(const Embedding& e, Ver
 std::optional<std::vector<SubclusterMove>> plan_subcluster(Embedding& e, VertexId v, std::size_t max_size,
                                                            const PlacementOptions& options,
                                                            topology::ClusterLinkWorkspace& ws,
-                                                           SubclusterCounters& counters) {
-  for (const std::vector<VertexId>& set : subcluster_candidates(e, v, max_size))
+                                                           SubclusterCounters& counters,
+                                                           const topology::ExpansionOrder& order) {
+  for (const std::vector<VertexId>& set : subcluster_candidates(e, v, max_size, order))
     if (auto moves = try_set(e, set, options, ws, counters)) return moves;
   return std::nullopt;
 }

@@ -28,6 +28,7 @@
 #include "algorithm/embedding.hpp"
 #include "algorithm/expansion/placement.hpp"
 #include "topology/cluster_links.hpp"
+#include "topology/topological_expansion.hpp"
 
 namespace cmx::algorithm {
 
@@ -44,16 +45,18 @@ struct SubclusterCounters {
 
 // The subclusters tried around v, in order: sizes 2, 3, 4 (up to max_size), v's cluster
 // neighbours ranked by how many of v's side constraints (planes through p_c) they carry, since
-// moving them with v removes those constraints. At most 14 sets.
-std::vector<std::vector<VertexId>> subcluster_candidates(const Embedding& e, VertexId v,
-                                                         std::size_t max_size);
+// moving them with v removes those constraints. At most 14 sets. A neighbour the order defers
+// (topology::ExpansionOrder::deferred) joins only a deferred v: the deferral is the caller's word.
+std::vector<std::vector<VertexId>> subcluster_candidates(const Embedding& e, VertexId v, std::size_t max_size,
+                                                         const topology::ExpansionOrder& order = {});
 
 // The first candidate set that expands, as the moves in order; nullopt when none does. `e` is
 // unchanged on return.
 std::optional<std::vector<SubclusterMove>> plan_subcluster(Embedding& e, VertexId v, std::size_t max_size,
                                                            const PlacementOptions& options,
                                                            topology::ClusterLinkWorkspace& ws,
-                                                           SubclusterCounters& counters);
+                                                           SubclusterCounters& counters,
+                                                           const topology::ExpansionOrder& order = {});
 
 // The cone of a common new position of `movers` under the coincidence rule above.
 ExpansionCone coincidence_cone(const Embedding& e, const std::vector<VertexId>& movers);

@@ -85,7 +85,7 @@ struct MapOptions {
   std::string replay_shelling = "off";
   bool check = false;           // assert every invariant after every step (slow; for debugging)
   std::string snap = "repair";  // doubles written: repair, chebyshev, nearest
-  std::string order = "priority";    // expansion order: priority, index, strict-index, random:SEED
+  std::string order = "priority";  // expansion order: priority, index, strict-index, random:SEED[,defer:A-B]
   std::string filter = "cascade";    // predicate arithmetic: cascade, interval, exact, mpfr:BITS
   std::string lp = "certified";      // LP backend of the placements: certified, exact
   std::string norm = "l2-upper";     // Chebyshev row weights: l2-upper, l1

@@ -144,7 +144,8 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
               stops the run and propagates.
     Other options (the fields of cmx::MapOptions, values as `cmx map` takes them): collapse (bool),
     check (bool), snap ("repair", "chebyshev", "nearest"), order ("priority", "index",
-    "random:SEED", "strict-index"), filter ("cascade", "interval", "exact", "mpfr:BITS"), lp ("certified", "exact"),
+    "random:SEED", "strict-index", each optionally followed by ",defer:A-B": input ids A to B-1
+    last; needs init="shrink"), filter ("cascade", "interval", "exact", "mpfr:BITS"), lp ("certified", "exact"),
     norm ("l2-upper", "l1"), precision, arith ("rational", "double", "mpfr:BITS"), subclusters (int),
     smooth (int), shelled ("when-stuck", "after-pushes", "first": when the fallback star-shapifies
     by shelling the cone base), replay_shelling ("off", "until-greedy", "full": replay a shelling

@@ -4,11 +4,12 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <string>
 
-#include "algorithm/verify/invariants.hpp"
-#include "algorithm/problem/preprocess.hpp"
 #include "algorithm/expansion/subcluster.hpp"
+#include "algorithm/problem/preprocess.hpp"
 #include "algorithm/problem/validate_problem.hpp"
+#include "algorithm/verify/invariants.hpp"
 #include "map_test_util.hpp"
 #include "shrunk_state.hpp"
 
@@ -99,4 +100,25 @@ TEST_CASE("the subclusters tried around a vertex: v and its cluster neighbours, 
     CHECK(subcluster_candidates(s.e, v, 1).empty());
     for (const auto& set : subcluster_candidates(s.e, v, 2)) CHECK(set.size() == 2);
   }
+}
+
+TEST_CASE("a deferred cluster vertex joins only the subclusters of deferred vertices") {
+  Shrunk s = shrunk(test::problem_from(perturbed_grid(5, 4, 4, 3), "tet"));
+  const std::uint32_t half = static_cast<std::uint32_t>(s.e.num_vertices() / 2);
+  const auto order = topology::parse_expansion_order("priority,defer:" + std::to_string(half) + "-" +
+                                                     std::to_string(s.e.num_vertices()));
+  REQUIRE(order);
+  std::size_t mixed_without = 0, deferred_sets = 0;
+  for (VertexId v{0}; v < s.e.num_vertices(); ++v) {
+    if (!s.e.unexpanded[v]) continue;
+    for (const auto& set : subcluster_candidates(s.e, v, 4))
+      for (VertexId w : set) mixed_without += order->deferred(w) != order->deferred(v) ? 1 : 0;
+    for (const auto& set : subcluster_candidates(s.e, v, 4, *order)) {
+      deferred_sets += order->deferred(v) ? 1 : 0;
+      for (VertexId w : set)
+        if (!order->deferred(v)) CHECK(!order->deferred(w));
+    }
+  }
+  CHECK(mixed_without > 0);  // without the order, the two ranges do meet in subclusters
+  CHECK(deferred_sets > 0);  // a deferred vertex still has its own, with any neighbour
 }

@@ -280,6 +280,16 @@ TEST_CASE("cmx map: wrong boundary vertex set, non-ball mesh, bad numbers and ba
   CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--precision", "fast"}).exit_code == 2);
   CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--filter", "naive"}).exit_code == 2);
   CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--format", "stl"}).exit_code == 2);
+  CHECK(run_cmx({"map", c.mesh, "--shape", "tet", "--init", "shrink", "--order", "priority,defer:3"})
+            .exit_code == 2);
+  // A deferred id range needs the input's numbering, which the local repair's stars do not keep.
+  r = run_cmx({"map", c.mesh, "--shape", "tet", "--order", "priority,defer:0-5", "-o", out});
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("--init shrink") != std::string::npos);
+  r = run_cmx(
+      {"map", c.mesh, "--shape", "tet", "--init", "shrink", "--order", "priority,defer:0-5", "-o", out});
+  CHECK(r.exit_code == 0);
+  CHECK(fs::exists(out + ".tmap"));
   CHECK(run_cmx({"map", "--help"}).exit_code == 0);
 }
 

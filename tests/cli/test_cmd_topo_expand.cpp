@@ -187,6 +187,25 @@ TEST_CASE(
   const auto from_file = run_cmx({"topo-expand", file, "--order", "index", "--fallback", "none", "--json"});
   CHECK(from_file.exit_code == 0);
   CHECK(json_integer(from_file.out, "remaining_vertices") == left);
+  // The compact house in its box: the same in index order, and in the default order once the
+  // house (ids 1176 to 1484) is deferred; generate-mesh writes the same ball.
+  CHECK(json_integer(expand_json("compact-bings-house-box", "index"), "remaining_vertices") == 309);
+  const std::string deferred = expand_json("compact-bings-house-box", "priority,defer:1176-1485");
+  CHECK(json_integer(deferred, "remaining_vertices") == 309);
+  CHECK(json_has(deferred, "\"order\": \"priority,defer:1176-1485\""));
+  CHECK(json_has(run_cmx({"topo-expand", "--builtin", "compact-bings-house-box", "--json"}).out,
+                 "\"stuck\": false"));
+  std::remove(file.c_str());
+  REQUIRE(run_cmx({"generate-mesh", "--shape", "compact-bings-house-box", "-o", file, "-q"}).exit_code == 0);
+  const auto compact = run_cmx({"topo-expand", file, "--order", "index", "--fallback", "none", "--json"});
+  CHECK(json_integer(compact.out, "remaining_vertices") == 309);
+  std::remove(file.c_str());
+  for (const char* bad : {"priority,defer:5", "priority,defer:9-9", "index,defer:a-b"}) {
+    const auto r = run_cmx({"topo-expand", "--builtin", "grid:2,2,2", "--order", bad});
+    CAPTURE(bad);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("unknown order") != std::string::npos);
+  }
 }
 
 TEST_CASE(

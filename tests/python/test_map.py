@@ -117,6 +117,16 @@ def test_strict_index_order(ball):
         cmx.map(V, T, shape="tet", init="shrink", order="strict_index")
 
 
+def test_deferred_order(ball):
+    # A deferred id range maps with init="shrink" only: the local repair renumbers vertices.
+    V, T = ball
+    check_map(cmx.map(V, T, shape="tet", init="shrink", order="priority,defer:0-5"), V, T)
+    with pytest.raises(cmx.InvalidOptions, match=r"only --init shrink"):
+        cmx.map(V, T, shape="tet", order="priority,defer:0-5")
+    with pytest.raises(cmx.InvalidOptions, match=r"option order: 'priority,defer:5-0'"):
+        cmx.map(V, T, shape="tet", init="shrink", order="priority,defer:5-0")
+
+
 def test_replay_shelling(ball):
     # Alg. 2 replayed from the start maps the small ball too; a misspelt mode is an error.
     V, T = ball

@@ -25,6 +25,36 @@ TEST_CASE("expansion order parsing") {
   CHECK(!parse_expansion_order("random:12x"));
   CHECK(!parse_expansion_order("Priority"));
   CHECK(!parse_expansion_order(""));
+  const auto d = parse_expansion_order("random:7,defer:10-20");
+  REQUIRE(d);
+  CHECK(d->kind == ExpansionOrderKind::random);
+  CHECK(d->seed == 7);
+  CHECK(!d->deferred(VertexId(9)));
+  CHECK(d->deferred(VertexId(10)));
+  CHECK(d->deferred(VertexId(19)));
+  CHECK(!d->deferred(VertexId(20)));
+  CHECK(to_string(*d) == "random:7,defer:10-20");
+  CHECK(!parse_expansion_order("priority")->deferred(VertexId(0)));
+  for (const char* bad :
+       {"priority,defer:", "priority,defer:5", "priority,defer:5-5", "priority,defer:6-5",
+        "priority,defer:-5", "priority,defer:1-x", "Priority,defer:1-2", "priority,defer:1-2,defer:3-4"})
+    CHECK_MESSAGE(!parse_expansion_order(bad), bad);
+}
+
+TEST_CASE("a deferred range is expanded last, in the order's own order") {
+  // On a grid nothing gets stuck: the deferred vertices are simply the sequence's tail.
+  const GridComplex g = grid_complex(5, 5, 5);
+  const std::vector<char> interior = interior_vertex_flags(g.mesh);
+  const auto order = parse_expansion_order("priority,defer:0-100");
+  REQUIRE(order);
+  const TopologicalExpansionResult r = topological_expansion(g.mesh, *order);
+  REQUIRE(!r.stuck);
+  std::size_t deferred = 0;
+  for (VertexId v{0}; v < 100; ++v) deferred += interior[v] ? 1 : 0;
+  REQUIRE(deferred > 0);
+  REQUIRE(deferred < r.sequence.size());
+  for (std::size_t i = 0; i < r.sequence.size(); ++i)
+    CHECK((r.sequence[i].idx() < 100) == (i >= r.sequence.size() - deferred));
 }
 
 TEST_CASE("topological expansion completes on grids in all three orders") {
