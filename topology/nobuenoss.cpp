@@ -139,7 +139,7 @@ std::vector<Sheet> bings_house_sheets() {
   return sheets;
 }
 
-// The same two rooms in the smallest box the lattice allows: [0,5]x[0,3]x[0,2], floor z=1, tube
+// The same two rooms in a compact box, [0,5]x[0,3]x[0,2] with the floor at z=1: tube
 // T1 (x in [1,2], y in [1,2]) from below, T2 (x in [3,4], y in [1,2]) from above, the walls in
 // the tubes' side planes (W1: y=1, x in [0,1], lower room; W2: y=2, x in [4,5], upper room). A
 // room is one design unit high, so at 2 cells per unit one layer of grid points lies inside it.
