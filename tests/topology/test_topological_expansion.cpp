@@ -8,6 +8,7 @@
 #include "topology/cluster_links.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/generators.hpp"
+#include "topology/mesh_edits.hpp"
 #include "topology/nobuenoss.hpp"
 #include "topology/topological_expansion.hpp"
 
@@ -137,6 +138,87 @@ TEST_CASE("an explicit initial cluster: two separate pieces are expanded, isolat
   CHECK(r.length() == 3);
   CHECK(r.automatic == 2);
   CHECK(r.k_manifold_counts[1] == 1);
+}
+
+TEST_CASE(
+    "Alg. 2 with the boundary in place cannot leave Bing's house: every step that would change its "
+    "cluster mesh fails Eq. (1)") {
+  // With the boundary in place, a step of Alg. 2 changes the cluster mesh only by expanding a
+  // cluster vertex or a vertex that splits an all-cluster edge or triangle (docs/algorithm/
+  // expansion.md). On the house none of these satisfies Eq. (1): a vertex splitting a house edge
+  // sees its ends and the edge's other triangles' apexes, never two of them adjacent (that would
+  // be a tet of the house), and so a K(2,k) graph with k >= 2; one splitting a house triangle
+  // sees that triangle's boundary. So no shelling, if one exists, replays with the boundary in
+  // place. Checked here by making each such split and taking it back.
+  GridComplex g = bings_house_nobuenoss(4);
+  TetMesh& m = g.mesh;
+  std::vector<char> U = interior_vertex_flags(m);
+  const std::size_t n = m.num_vertices();
+  ClusterLinkWorkspace ws;
+  std::size_t edges = 0, triangles = 0;
+  auto split_vertex = [&](SplitResult split) {
+    REQUIRE(split.ok);
+    U.resize(m.num_vertices(), 0);
+    U[split.new_vertex] = 1;
+    return split.new_vertex;
+  };
+  auto take_back = [&](VertexId x, VertexId into) {
+    REQUIRE(collapse_edge(m, into, x).ok);
+    U[x] = 0;
+  };
+  for (VertexId a{0}; a < n; ++a) {
+    if (!U[a]) continue;
+    std::vector<VertexId> nbrs;
+    for (TetId t : m.tets_of(a))
+      for (VertexId b : m.tet(t))
+        if (b > a && b.idx() < n && U[b]) nbrs.push_back(b);
+    std::sort(nbrs.begin(), nbrs.end());
+    nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
+    for (VertexId b : nbrs) {
+      const VertexId x = split_vertex(split_edge(m, a, b));
+      CHECK_FALSE(is_topologically_expandable(m, x, U, ws));
+      take_back(x, a);
+      ++edges;
+    }
+  }
+  std::vector<Triangle> faces;
+  for (TetId t : m.live_tets())
+    for (int i = 0; i < 4; ++i) {
+      Triangle f = tet_face(m.tet(t), i);
+      if (std::all_of(f.begin(), f.end(), [&](VertexId v) { return v.idx() < n && U[v]; })) {
+        std::sort(f.begin(), f.end());
+        faces.push_back(f);
+      }
+    }
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  for (const Triangle& f : faces) {
+    const VertexId x = split_vertex(split_face(m, f[0], f[1], f[2]));
+    CHECK_FALSE(is_topologically_expandable(m, x, U, ws));
+    take_back(x, f[0]);
+    ++triangles;
+  }
+  const SubcomplexCounts c = subcomplex_counts(m, VertexSubset(U));
+  CHECK(edges == c.edges);  // every house edge and triangle tried once, the house unchanged
+  CHECK(triangles == c.triangles);
+  CHECK(c.tets == 0);
+  MESSAGE(edges << " edge splits and " << triangles << " triangle splits, none satisfying Eq. (1)");
+  // The control: in a grid's interior, where greedy expansion goes through, some do.
+  GridComplex grid = grid_complex(4, 4, 4);
+  std::vector<char> G = interior_vertex_flags(grid.mesh);
+  std::size_t open = 0;
+  for (VertexId a{0}; a < 125; ++a)
+    for (VertexId b{a.idx() + 1}; b < 125; ++b) {
+      if (!G[a] || !G[b] || tets_around_edge(grid.mesh, a, b).empty()) continue;
+      const SplitResult split = split_edge(grid.mesh, a, b);
+      REQUIRE(split.ok);
+      G.resize(grid.mesh.num_vertices(), 0);
+      G[split.new_vertex] = 1;
+      open += is_topologically_expandable(grid.mesh, split.new_vertex, G, ws) ? 1 : 0;
+      REQUIRE(collapse_edge(grid.mesh, a, split.new_vertex).ok);
+      G[split.new_vertex] = 0;
+    }
+  CHECK(open > 0);
 }
 
 TEST_CASE("Bing's house NOBUENOSS: a ball whose interior is a contractible 2-complex without free edge") {
