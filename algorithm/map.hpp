@@ -58,7 +58,7 @@ std::string_view to_string(ShelledMode m);
 
 // Whether the expansion replays a shelling of the input from the start (paper Sec. 4.3, Alg. 2;
 // expansion/shelling_replay.cpp) instead of expanding greedily: off; until_greedy, until
-// topological expansion of the cluster left completes in the default order, then the greedy loop;
+// topological expansion of the cluster left completes in the run's order, then the greedy loop;
 // full, every step. The names are those of cmx map --replay-shelling.
 enum class ReplayMode : std::uint8_t { off, until_greedy, full };
 std::optional<ReplayMode> parse_replay_mode(std::string_view name);

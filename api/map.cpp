@@ -64,8 +64,7 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
   const auto order = topology::parse_expansion_order(in.order);
   if (!order)
     return bad("order", in.order,
-               "is not an expansion order (priority, index, strict-index, random:SEED; optionally followed "
-               "by ,defer:A-B)");
+               "is not an expansion order (" + std::string(topology::expansion_order_syntax) + ")");
   if (order->defer_first < order->defer_end && in.init != InitialMap::shrink)
     return bad(
         "order", in.order,

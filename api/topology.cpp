@@ -85,8 +85,8 @@ TopologicalExpansion expand_topologically(std::span<const Tet> tets, std::size_t
                                           std::string_view order) {
   const auto parsed = topology::parse_expansion_order(order);
   if (!parsed)
-    throw Error("expand_topologically: unknown order '" + std::string(order) +
-                "' (priority, index, strict-index or random:SEED, optionally followed by ,defer:A-B)");
+    throw Error("expand_topologically: unknown order '" + std::string(order) + "' (" +
+                std::string(topology::expansion_order_syntax) + ")");
   const topology::TetMesh mesh = ball_mesh("expand_topologically", tets, vertex_count);
   const std::vector<char> unexpanded = cluster_flags("expand_topologically", mesh, cluster_vertices);
   const topology::SubcomplexCounts initial = topology::cluster_mesh_counts(mesh, unexpanded);

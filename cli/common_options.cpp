@@ -10,9 +10,8 @@ CLI::Option* add_order_option(CLI::App& app, topology::ExpansionOrder& into, con
   const auto parse = [](const std::string& text) {
     const auto order = topology::parse_expansion_order(text);
     if (!order)
-      throw std::invalid_argument("unknown order '" + text +
-                                  "' (priority, index, strict-index, random:SEED; each optionally followed "
-                                  "by ,defer:A-B with A < B)");
+      throw std::invalid_argument("unknown order '" + text + "' (" +
+                                  std::string(topology::expansion_order_syntax) + ")");
     return *order;
   };
   return add_parsed(app, "--order", into, parse, description)->type_name("ORDER");

@@ -38,9 +38,10 @@ struct ShellingOptions {
   // When given (one flag per vertex: interior to the mesh), removable tets are taken cheapest
   // step first, the seeded priority breaking ties, for Alg. 2 replayed with the boundary in place
   // (algorithm/expansion/shelling_replay.cpp): a step whose vertex or split simplex has a
-  // boundary vertex changes no cluster mesh (cost 0), then a removal by an interior vertex of its
-  // own (1), a split of a free interior face (2), a split of a free interior edge (3, the one
-  // that needs inflation). Without it the seeded priority alone orders them.
+  // boundary vertex changes no cluster mesh (cost 0); otherwise the cost is the number of faces
+  // the tet shares: a removal by an interior vertex of its own (1), a split of an interior edge
+  // (2, the step that needs inflation), a split of a free interior face (3). Without it the
+  // seeded priority alone orders them.
   const std::vector<char>* interior = nullptr;
 };
 

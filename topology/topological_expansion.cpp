@@ -13,48 +13,25 @@ namespace cmx::topology {
 
 namespace {
 
-std::optional<std::uint32_t> parse_id(std::string_view digits) {
-  std::uint32_t id = 0;
-  const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), id);
+// A whole decimal number of type T, nothing before or after it.
+template <class T>
+std::optional<T> parse_number(std::string_view digits) {
+  T value = 0;
+  const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (digits.empty() || ec != std::errc{} || ptr != digits.data() + digits.size()) return std::nullopt;
-  return id;
+  return value;
 }
 
-std::optional<ExpansionOrder> parse_base_order(std::string_view text);
-
-}  // namespace
-
-std::optional<ExpansionOrder> parse_expansion_order(std::string_view text) {
-  constexpr std::string_view defer = ",defer:";
-  const std::size_t at = text.find(defer);
-  if (at == std::string_view::npos) return parse_base_order(text);
-  std::optional<ExpansionOrder> order = parse_base_order(text.substr(0, at));
-  const std::string_view range = text.substr(at + defer.size());
-  const std::size_t dash = range.find('-');
-  if (!order || dash == std::string_view::npos) return std::nullopt;
-  const std::optional<std::uint32_t> first = parse_id(range.substr(0, dash)),
-                                     end = parse_id(range.substr(dash + 1));
-  if (!first || !end || *first >= *end) return std::nullopt;
-  order->defer_first = *first;
-  order->defer_end = *end;
-  return order;
-}
-
-namespace {
-
+// The order without a deferral.
 std::optional<ExpansionOrder> parse_base_order(std::string_view text) {
   if (text == "priority") return ExpansionOrder{ExpansionOrderKind::priority, 0};
   if (text == "index") return ExpansionOrder{ExpansionOrderKind::index, 0};
   if (text == "strict-index") return ExpansionOrder{ExpansionOrderKind::strict_index, 0};
   constexpr std::string_view prefix = "random:";
-  if (text.substr(0, prefix.size()) == prefix) {
-    const std::string_view digits = text.substr(prefix.size());
-    std::uint64_t seed = 0;
-    const auto [ptr, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), seed);
-    if (digits.empty() || ec != std::errc{} || ptr != digits.data() + digits.size()) return std::nullopt;
-    return ExpansionOrder{ExpansionOrderKind::random, seed};
-  }
-  return std::nullopt;
+  if (text.substr(0, prefix.size()) != prefix) return std::nullopt;
+  const std::optional<std::uint64_t> seed = parse_number<std::uint64_t>(text.substr(prefix.size()));
+  if (!seed) return std::nullopt;
+  return ExpansionOrder{ExpansionOrderKind::random, *seed};
 }
 
 std::string base_name(const ExpansionOrder& order) {
@@ -68,6 +45,22 @@ std::string base_name(const ExpansionOrder& order) {
 }
 
 }  // namespace
+
+std::optional<ExpansionOrder> parse_expansion_order(std::string_view text) {
+  constexpr std::string_view defer = ",defer:";
+  const std::size_t at = text.find(defer);
+  if (at == std::string_view::npos) return parse_base_order(text);
+  std::optional<ExpansionOrder> order = parse_base_order(text.substr(0, at));
+  const std::string_view range = text.substr(at + defer.size());
+  const std::size_t dash = range.find('-');
+  if (!order || dash == std::string_view::npos) return std::nullopt;
+  const std::optional<std::uint32_t> first = parse_number<std::uint32_t>(range.substr(0, dash)),
+                                     end = parse_number<std::uint32_t>(range.substr(dash + 1));
+  if (!first || !end || *first >= *end) return std::nullopt;
+  order->defer_first = *first;
+  order->defer_end = *end;
+  return order;
+}
 
 std::string to_string(const ExpansionOrder& order) {
   if (order.defer_first >= order.defer_end) return base_name(order);

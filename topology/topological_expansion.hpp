@@ -46,6 +46,9 @@ struct ExpansionOrder {
 // followed by ",defer:A-B" (decimal ids, A < B: the range [A, B) is deferred). nullopt when
 // malformed.
 [[nodiscard]] std::optional<ExpansionOrder> parse_expansion_order(std::string_view text);
+// What parse_expansion_order takes, for the messages that reject something else.
+inline constexpr std::string_view expansion_order_syntax =
+    "priority, index, strict-index or random:SEED, each optionally followed by ,defer:A-B with A < B";
 [[nodiscard]] std::string to_string(const ExpansionOrder& order);
 
 struct TopologicalExpansionResult {

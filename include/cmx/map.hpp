@@ -80,7 +80,7 @@ struct MapOptions {
   std::string shelled = "when-stuck";
   // Replay a shelling of the input from the start (paper Sec. 4.3, Alg. 2) instead of expanding
   // greedily (cmx map --replay-shelling): off; until-greedy (until topological expansion of the
-  // cluster left completes in the default order, then the greedy loop); full (every step).
+  // cluster left completes in the run's order, then the greedy loop); full (every step).
   // For shellable inputs on which greedy expansion meets a NOBUENOSS; slower elsewhere.
   std::string replay_shelling = "off";
   bool check = false;           // assert every invariant after every step (slow; for debugging)
