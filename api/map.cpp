@@ -65,10 +65,11 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
   if (!order)
     return bad("order", in.order,
                "is not an expansion order (" + std::string(topology::expansion_order_syntax) + ")");
-  if (order->defer_first < order->defer_end && in.init != InitialMap::shrink)
-    return bad(
-        "order", in.order,
-        "defers input vertex ids, which only --init shrink keeps (the local repair's stars renumber them)");
+  // A combinatorial run always starts shrunk (algorithm::MapOptions::combinatorial).
+  if (order->defer_first < order->defer_end && in.init != InitialMap::shrink && !in.combinatorial)
+    return bad("order", in.order,
+               "defers input vertex ids, which only --init shrink (or --combinatorial) keeps (the local "
+               "repair's stars renumber them)");
   const auto shelled = algorithm::parse_shelled_mode(in.shelled);
   if (!shelled) return bad("shelled", in.shelled, "is not a shelled star-shapification mode (when-stuck, after-pushes, first)");
   const auto replay = algorithm::parse_replay_mode(in.replay_shelling);

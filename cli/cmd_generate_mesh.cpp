@@ -8,13 +8,16 @@
 //   bings-house-box[:S] the same house in a full box, its vertices numbered last (shellable;
 //                      greedy `index` order meets the house as a NOBUENOSS), S even, default 2
 //   compact-bings-house-box[:S] the same with a compact house (5 times fewer tets)
+//   dunce-hat-ball     a 90-tet shellable ball meeting a dunce hat (topology::dunce_hat_ball),
+//                      combinatorial only: written as a facet list (.facets)
 //   knotted-hole[:S]   Furch's knotted hole, S cells per lattice unit (its cluster mesh erodes to a
 //   NOBUENOSS) fingers:F,W,L      a palm with F bent fingers of W x W cells and length L (thin parts)
 // --perturb SEED jitters every vertex by a dyadic offset of at most A (default 0.25) per axis,
 // keeping only offsets after which all its tets stay strictly positive (exact). OUT's extension
 // picks the format (io::write_tet_mesh): .ovm keeps the exact positions (as "str_exact_position";
 // they are doubles anyway unless A has a long mantissa), .vtk .vtu .mesh .msh get the nearest
-// doubles. Written atomically. Exit: 0 written; 2 bad command line; 9 OUT cannot be written.
+// doubles; .facets writes the tets alone (io/write_facets.hpp). Written atomically. Exit: 0 written; 2 bad
+// command line; 9 OUT cannot be written.
 #include <charconv>
 #include <optional>
 #include <stdexcept>
@@ -22,13 +25,16 @@
 #include <string_view>
 #include <vector>
 
-#include "generators/domain_generators.hpp"
 #include "cli/command.hpp"
 #include "cli/command_line.hpp"
 #include "cli/files.hpp"
 #include "cli/messages.hpp"
 #include "cli/option_values.hpp"
+#include "generators/domain_generators.hpp"
+#include "io/read_facets.hpp"
+#include "io/write_facets.hpp"
 #include "io/write_mesh.hpp"
+#include "topology/nobuenoss.hpp"
 
 namespace cmx::cli::generate_mesh_command {
 namespace {
@@ -58,7 +64,7 @@ std::optional<std::vector<std::uint32_t>> parse_dimensions(std::string_view text
 
 struct ShapeRequest {
   char kind = 0;  // 'g' grid, 'b' ball, 's' slab, 'h' Bing's house, 'H' in a box, 'C' compact in a box,
-                  // 'k' knotted hole, 'f' fingers
+                  // 'k' knotted hole, 'f' fingers, 'd' the dunce-hat ball (no positions)
   std::vector<std::uint32_t> dims;
 };
 
@@ -67,6 +73,7 @@ std::optional<ShapeRequest> parse_shape(const std::string& text) {
   if (text == "bings-house-box") return ShapeRequest{'H', {2}};
   if (text == "compact-bings-house-box") return ShapeRequest{'C', {2}};
   if (text == "knotted-hole") return ShapeRequest{'k', {1}};
+  if (text == "dunce-hat-ball") return ShapeRequest{'d', {}};
   const auto colon = text.find(':');
   if (colon == std::string::npos) return std::nullopt;
   const std::string name = text.substr(0, colon);
@@ -86,6 +93,7 @@ std::optional<ShapeRequest> parse_shape(const std::string& text) {
 
 std::uint64_t cell_count(const ShapeRequest& s) {
   const auto& d = s.dims;
+  if (s.kind == 'd') return 1;
   if (s.kind == 'b') return 8 * std::uint64_t{d[0]} * d[0] * d[0];  // the bounding grid
   if (s.kind == 'h' || s.kind == 'H') return 400 * std::uint64_t{d[0]} * d[0] * d[0];  // the bounding box, roughly
   if (s.kind == 'C')
@@ -110,7 +118,7 @@ void add_options(CLI::App& app, GenerateArgs& a) {
       throw std::invalid_argument(
           "bad shape '" + text +
           "' (grid:NX,NY,NZ, ball:R, slab:NX,NY[,1|2], bings-house[:S], bings-house-box[:S], "
-          "compact-bings-house-box[:S], knotted-hole[:S] or fingers:F,W,L)");
+          "compact-bings-house-box[:S], dunce-hat-ball, knotted-hole[:S] or fingers:F,W,L)");
     if (cell_count(*s) > max_cells) throw std::invalid_argument("'" + text + "' has more than " + std::to_string(max_cells) + " cells");
     a.shape_text = text;
     return *s;
@@ -127,6 +135,9 @@ void add_options(CLI::App& app, GenerateArgs& a) {
              "greedy expansion in index order meets the house as a NOBUENOSS);\n"
              "compact-bings-house-box[:S] (the same with a compact house, 6720\n"
              "tets at S = 2, the last 309 vertices on the house);\n"
+             "dunce-hat-ball (90 tets, shellable, stuck on a dunce hat on ids\n"
+             "19-26 in index order; no positions: OUT must be .facets, for\n"
+             "cmx map --combinatorial and cmx topo-expand);\n"
              "fingers:F,W,L (a palm with F bent fingers of W x W cells, length L;\n"
              "F 1-16, W 2-8, L 1-400); at most 2000000 cells (of the bounding grid)")
       ->type_name("SHAPE")
@@ -139,10 +150,13 @@ void add_options(CLI::App& app, GenerateArgs& a) {
              "largest jitter per axis, in cells (default 0.25; needs --perturb)")
       ->type_name("A");
   const auto output = [](const std::string& text) {
-    if (!io::is_writable_mesh_path(text)) throw std::invalid_argument("cannot write '" + text + "': unknown format");
+    if (!io::is_writable_mesh_path(text) && !io::is_facet_list_path(text))
+      throw std::invalid_argument("cannot write '" + text + "': unknown format");
     return text;
   };
-  add_parsed(app, "-o,--output", a.output, output, ".ovm (exact positions kept) .vtk .vtu .mesh .msh")
+  add_parsed(app, "-o,--output", a.output, output,
+             ".ovm (exact positions kept) .vtk .vtu .mesh .msh, or .facets\n"
+             "(the tets alone, 0-based)")
       ->type_name("OUT")
       ->required();
 }
@@ -174,12 +188,28 @@ int run(const std::vector<std::string>& args) {
   add_options(line.app(), a);
   if (const auto done = line.parse(args)) return *done;
   if (a.amplitude && !a.seed) usage_error("--amplitude needs --perturb SEED");
+  const bool facets = io::is_facet_list_path(a.output);
+  if (a.shape.kind == 'd' && !facets)
+    usage_error("dunce-hat-ball has no positions: write it as a .facets file");
+  if (a.shape.kind == 'd' && a.seed) usage_error("--perturb needs positions, which dunce-hat-ball has not");
   check_writable({a.output});
+  if (a.shape.kind == 'd') {
+    std::vector<io::Tet> tets;
+    const topology::TetMesh mesh = topology::dunce_hat_ball();
+    for (auto t : mesh.live_tets()) tets.push_back(topology::indices_of(mesh.tet(t)));
+    io::write_facet_list(a.output, tets);
+    note("wrote " + a.output + ": " + std::to_string(mesh.num_vertices()) + " vertices, " +
+         std::to_string(tets.size()) + " tets");
+    return exit_ok;
+  }
   generators::GeneratedDomain domain = generate(a);
   io::TetMeshData data;
   data.positions = std::move(domain.positions);
   for (auto t : domain.mesh.live_tets()) data.tets.push_back(topology::indices_of(domain.mesh.tet(t)));
-  io::write_tet_mesh(a.output, data);
+  if (facets)
+    io::write_facet_list(a.output, data.tets);
+  else
+    io::write_tet_mesh(a.output, data);
   note("wrote " + a.output + ": " + std::to_string(data.positions.size()) + " vertices, " + std::to_string(data.tets.size()) +
        " tets");
   return exit_ok;

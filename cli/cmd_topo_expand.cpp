@@ -30,8 +30,10 @@
 #include "cli/json.hpp"
 #include "cli/mesh_input.hpp"
 #include "cmx_version.hpp"
+#include "io/read_facets.hpp"
 #include "topology/ball_check.hpp"
 #include "topology/chords.hpp"
+#include "topology/coherent_orientation.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/fixed_boundary_replay.hpp"
 #include "topology/generators.hpp"
@@ -99,6 +101,7 @@ TetMesh builtin_mesh(const std::string& name) {
   if (name == "bings-house") return topology::bings_house_nobuenoss().mesh;
   if (name == "bings-house-box") return topology::bings_house_in_box().mesh;
   if (name == "compact-bings-house-box") return topology::compact_bings_house_in_box().mesh;
+  if (name == "dunce-hat-ball") return topology::dunce_hat_ball();
   if (name.rfind("grid:", 0) == 0) {
     if (const auto n = parse_grid_size(name.substr(5)))
       return topology::grid_complex((*n)[0], (*n)[1], (*n)[2]).mesh;
@@ -107,7 +110,7 @@ TetMesh builtin_mesh(const std::string& name) {
   }
   usage_error("--builtin: unknown builtin '" + name +
               "' (knotted-hole, unknotted-hole, bings-house, bings-house-box, compact-bings-house-box, "
-              "grid:NX,NY,NZ)");
+              "dunce-hat-ball, grid:NX,NY,NZ)");
 }
 
 void print_fallback_json(const std::optional<topology::ShellingFallback>& f) {
@@ -204,11 +207,20 @@ Input read_input(const std::string& path, const std::string& builtin) {
     in.source = "builtin:" + builtin;
     return in;
   }
+  in.source = path;
+  if (io::is_facet_list_path(path)) {
+    // A facet list carries no orientation: give the tets one, as cmx map --combinatorial does.
+    const io::FacetList list = io::read_facet_list_file(path);
+    in.mesh = TetMesh(list.vertex_count, list.tets);
+    if (const auto o = topology::orient_coherently(in.mesh); !o.ok)
+      throw Failure(exit_invalid_problem,
+                    path + " is not a ball: its tets cannot be oriented alike: " + o.message);
+    return in;
+  }
   io::ReadOptions keep;
   keep.orientation = io::Orientation::keep;
   const io::TetMeshData data = read_mesh(path, keep);
   in.mesh = TetMesh(data.positions.size(), data.tets);
-  in.source = path;
   return in;
 }
 
@@ -221,14 +233,17 @@ int run(const std::vector<std::string>& args) {
   CLI::App& app = line.app();
   app.add_option("MESH", path,
                  ".ovm .vtk .vtu .mesh .msh .node/.ele; must be a ball (tets consistently\n"
-                 "oriented across faces; geometric signs are not computed: see cmx info)")
+                 "oriented across faces; geometric signs are not computed: see cmx info),\n"
+                 "or a facet list .facets (its tets are oriented alike first)")
       ->type_name("");
   app.add_option("--builtin", builtin,
                  "a complex built in memory instead of MESH: knotted-hole (Furch's ball\n"
                  "with a knotted hole: gets stuck), unknotted-hole (its control),\n"
                  "bings-house, bings-house-box (the house in a shellable box, stuck on\n"
                  "the house in index order only), compact-bings-house-box (the same,\n"
-                 "compact: 6720 tets, the house on ids 1176-1484), grid:NX,NY,NZ\n"
+                 "compact: 6720 tets, the house on ids 1176-1484), dunce-hat-ball (90\n"
+                 "tets, stuck on a dunce hat, ids 19-26, in index order; shellable),\n"
+                 "grid:NX,NY,NZ\n"
                  "(Freudenthal grid of NX*NY*NZ cells, 6 tets each)")
       ->type_name("NAME");
   add_order_option(app, order,

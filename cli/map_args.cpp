@@ -206,10 +206,10 @@ void add_expansion_options(CLI::App& app, MapArgs& a) {
                    "lowest id first, refined if need be: the order of cmx topo-expand\n"
                    "--order index, for experiments; it forces refinement where the\n"
                    "others would expand simply and is much slower); any of them followed\n"
-                   "by ',defer:A-B' (for experiments; --init shrink only) expands the\n"
-                   "input's vertex ids A to B-1 only when no other candidate is queued, a\n"
-                   "refined one included (one whose refinement failed waits for its star\n"
-                   "to change)");
+                   "by ',defer:A-B' (for experiments; --init shrink or --combinatorial\n"
+                   "only) expands the input's vertex ids A to B-1 only when no other\n"
+                   "candidate is queued, a refined one included (one whose refinement\n"
+                   "failed waits for its star to change)");
   const auto precision =
       one_of_table("precision policy", algorithm::parse_precision_policy, "dyadic, shift, segment, none");
   add_parsed(app, "--precision", a.options.placement.precision, precision,

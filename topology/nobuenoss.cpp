@@ -1,7 +1,12 @@
 #include "topology/nobuenoss.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <map>
+#include <stdexcept>
 #include <vector>
+
+#include "topology/coherent_orientation.hpp"
 
 namespace cmx::topology {
 namespace {
@@ -259,6 +264,166 @@ GridComplex bings_house_in_box(std::uint32_t scale, std::size_t* house_vertices)
 
 GridComplex compact_bings_house_in_box(std::uint32_t scale, std::size_t* house_vertices) {
   return house_in_box(HouseGrid(compact_house(), std::max<std::uint32_t>(scale, 2) & ~1u, 2), house_vertices);
+}
+
+namespace {
+
+// Hachimori's 8-vertex dunce hat, vertices 1 to 8 (the numbering of its published facet list).
+constexpr std::array<std::array<std::uint32_t, 3>, 17> dunce_hat_triangles{{{1, 3, 5},
+                                                                            {2, 3, 5},
+                                                                            {2, 4, 5},
+                                                                            {1, 2, 4},
+                                                                            {1, 3, 4},
+                                                                            {3, 4, 8},
+                                                                            {1, 2, 8},
+                                                                            {1, 7, 8},
+                                                                            {1, 2, 7},
+                                                                            {2, 3, 7},
+                                                                            {3, 6, 7},
+                                                                            {1, 3, 6},
+                                                                            {1, 5, 6},
+                                                                            {4, 5, 6},
+                                                                            {4, 6, 8},
+                                                                            {6, 7, 8},
+                                                                            {2, 3, 8}}};
+
+// The dunce hat's vertex at each position 1..8 along the moment curve of C(8,4).
+constexpr std::array<std::uint32_t, 9> on_moment_curve{0, 2, 5, 1, 4, 6, 3, 8, 7};
+
+using Simplex = std::vector<std::uint32_t>;  // sorted vertex ids
+
+Simplex sorted_simplex(Simplex s) {
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+bool contains(const Simplex& big, const Simplex& small) {
+  return std::includes(big.begin(), big.end(), small.begin(), small.end());
+}
+
+// Facets of the boundary of C(8,4): the 4-sets S of {1..8} such that any two positions not in S
+// have an even number of members of S between them (Gale's evenness condition).
+std::vector<Simplex> cyclic_polytope_boundary() {
+  std::vector<Simplex> facets;
+  for (std::uint32_t mask = 0; mask < 256; ++mask) {
+    if (std::popcount(mask) != 4) continue;
+    bool even = true;
+    for (std::uint32_t a = 0; a < 8 && even; ++a)
+      for (std::uint32_t b = a + 1; b < 8 && even; ++b) {
+        if ((mask >> a & 1) || (mask >> b & 1)) continue;
+        const std::uint32_t between = mask & ((1u << b) - (1u << (a + 1)));
+        even = std::popcount(between) % 2 == 0;
+      }
+    if (!even) continue;
+    Simplex f;
+    for (std::uint32_t i = 0; i < 8; ++i)
+      if (mask >> i & 1) f.push_back(on_moment_curve[i + 1]);
+    facets.push_back(sorted_simplex(f));
+  }
+  return facets;
+}
+
+// The bistellar 3-2 move on edge (d, e) whose three tets close around the triangle `link`.
+void move_3_2(std::vector<Simplex>& facets, std::uint32_t d, std::uint32_t e, const Simplex& link) {
+  std::erase_if(facets, [&](const Simplex& f) { return contains(f, sorted_simplex({d, e})); });
+  facets.push_back(sorted_simplex({link[0], link[1], link[2], d}));
+  facets.push_back(sorted_simplex({link[0], link[1], link[2], e}));
+}
+
+// Stellar subdivision of the simplex `s` at a new vertex `w`: every tet containing s becomes
+// the tets that replace one vertex of s by w.
+void stellar_subdivide(std::vector<Simplex>& tets, const Simplex& s, std::uint32_t w) {
+  std::vector<Simplex> out;
+  for (const Simplex& t : tets) {
+    if (!contains(t, s)) {
+      out.push_back(t);
+      continue;
+    }
+    for (std::uint32_t x : s) {
+      Simplex u;
+      for (std::uint32_t y : t)
+        if (y != x) u.push_back(y);
+      u.push_back(w);
+      out.push_back(sorted_simplex(u));
+    }
+  }
+  tets = std::move(out);
+}
+
+// The k-faces of `tets` with every vertex in 1..8 that are not faces of the dunce hat, in order.
+std::vector<Simplex> foreign_faces(const std::vector<Simplex>& tets, int k) {
+  std::vector<Simplex> hat;
+  for (const auto& t : dunce_hat_triangles)
+    for (int skip = 0; skip < 3; ++skip) {
+      Simplex f;
+      for (int i = 0; i < 3; ++i)
+        if (k == 3 || i != skip) f.push_back(t[static_cast<std::size_t>(i)]);
+      hat.push_back(f);
+    }
+  std::vector<Simplex> out;
+  for (const Simplex& t : tets)
+    for (std::uint32_t mask = 0; mask < 16; ++mask) {
+      if (std::popcount(mask) != k) continue;
+      Simplex f;
+      for (std::size_t i = 0; i < 4; ++i)
+        if (mask >> i & 1) f.push_back(t[i]);
+      if (f.back() <= 8 && std::find(hat.begin(), hat.end(), f) == hat.end()) out.push_back(f);
+    }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The prisms between each boundary triangle and its copy, each cut into three tets by the
+// vertex order (so that neighbouring prisms agree on their common square).
+void add_collar(std::vector<Simplex>& tets, std::uint32_t& next) {
+  std::map<Simplex, int> faces;
+  for (const Simplex& t : tets)
+    for (std::size_t skip = 0; skip < 4; ++skip) {
+      Simplex f;
+      for (std::size_t i = 0; i < 4; ++i)
+        if (i != skip) f.push_back(t[i]);
+      ++faces[f];
+    }
+  std::map<std::uint32_t, std::uint32_t> copy;
+  for (const auto& [f, n] : faces)
+    if (n == 1)
+      for (std::uint32_t v : f) copy.emplace(v, 0);
+  for (auto& [v, c] : copy) c = next++;
+  for (const auto& [f, n] : faces) {
+    if (n != 1) continue;
+    const std::uint32_t a = f[0], b = f[1], c = f[2];
+    tets.push_back(sorted_simplex({a, b, c, copy[c]}));
+    tets.push_back(sorted_simplex({a, b, copy[b], copy[c]}));
+    tets.push_back(sorted_simplex({a, copy[a], copy[b], copy[c]}));
+  }
+}
+
+}  // namespace
+
+TetMesh dunce_hat_ball(std::size_t* hat_vertices) {
+  std::vector<Simplex> tets = cyclic_polytope_boundary();
+  // Edge (2, 8) of the cyclic polytope (positions), whose link is positions 1, 3, 7.
+  move_3_2(tets, on_moment_curve[2], on_moment_curve[8],
+           sorted_simplex({on_moment_curve[1], on_moment_curve[3], on_moment_curve[7]}));
+  // A 3-sphere minus a tet is a ball.
+  std::erase(tets, Simplex{1, 2, 4, 5});
+  std::sort(tets.begin(), tets.end());
+  std::uint32_t next = 9;
+  for (int k : {2, 3})
+    for (auto f = foreign_faces(tets, k); !f.empty(); f = foreign_faces(tets, k))
+      stellar_subdivide(tets, f.front(), next++);
+  add_collar(tets, next);
+  // Ids: 9.. (subdivision vertices, then collar copies) to 0.., the dunce hat's 1..8 last.
+  const std::uint32_t others = next - 9;
+  const auto id = [&](std::uint32_t v) { return VertexId{v > 8 ? v - 9 : others + v - 1}; };
+  std::vector<Tet> out;
+  for (const Simplex& t : tets) out.push_back({id(t[0]), id(t[1]), id(t[2]), id(t[3])});
+  if (hat_vertices) *hat_vertices = 8;
+  TetMesh mesh(others + 8, out);
+  if (const CoherentOrientation o = orient_coherently(mesh); !o.ok)
+    throw std::logic_error("dunce_hat_ball: not orientable: " + o.message);
+  return mesh;
 }
 
 }  // namespace cmx::topology

@@ -49,4 +49,22 @@ namespace cmx::topology {
 [[nodiscard]] GridComplex compact_bings_house_in_box(std::uint32_t scale = 2,
                                                      std::size_t* house_vertices = nullptr);
 
+// A small shellable ball whose greedy expansion meets a dunce hat (a NOBUENOSS) once its other
+// vertices are expanded: 27 vertices and 90 tets, given combinatorially (no positions; map it
+// with --combinatorial). Built from published definitions, with no data file:
+//   1. Hachimori's 8-vertex dunce hat D (17 triangles; every edge in two or three of them);
+//   2. a 3-sphere containing D: the boundary of the cyclic 4-polytope C(8,4) (facets by Gale's
+//      evenness condition) after the bistellar 3-2 move on the edge of its positions 2 and 8,
+//      its vertices along the moment curve being D's 2, 5, 1, 4, 6, 3, 8, 7 (found by a search
+//      over flips; the 19 tets of the result contain D in their 2-skeleton, as Benedetti and
+//      Lutz's 8-vertex ball does);
+//   3. that sphere minus the tet (1, 2, 4, 5): a ball containing D;
+//   4. stellar subdivisions of the simplices spanned by D's vertices that are not D's (edges
+//      first, then triangles), so that D is the full subcomplex on its vertices;
+//   5. a collar on the boundary, so that every vertex so far is interior.
+// Numbering: the 13 vertices of step 4 first, the collar's 6 outer copies (the boundary) next,
+// D's vertices last (ids 19 to 26; `hat_vertices` receives 8). Expanding D last (index order, or
+// any order with D deferred) gets stuck on exactly D; greedy shelling shells the ball.
+[[nodiscard]] TetMesh dunce_hat_ball(std::size_t* hat_vertices = nullptr);
+
 }  // namespace cmx::topology

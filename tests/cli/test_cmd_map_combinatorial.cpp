@@ -94,3 +94,49 @@ TEST_CASE("cmx map --combinatorial refuses what is not an orientable ball, and m
   CHECK(c.err.find(bad + ":2:") != std::string::npos);
   CHECK_FALSE(fs::exists(out + ".tmap"));
 }
+
+TEST_CASE("the dunce-hat ball as a facet list: generate-mesh writes it, topo-expand and map meet the hat") {
+  const auto dir = fs::path(fresh_stem());
+  fs::create_directories(dir);
+  const std::string file = (dir / "dunce.facets").string();
+  // Without positions it can only be written as a facet list; --perturb has nothing to move.
+  const auto ovm = run_cmx({"generate-mesh", "--shape", "dunce-hat-ball", "-o", (dir / "d.ovm").string()});
+  CHECK(ovm.exit_code == 2);
+  CHECK(ovm.err.find("dunce-hat-ball has no positions: write it as a .facets file") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "d.ovm"));
+  CHECK(run_cmx({"generate-mesh", "--shape", "dunce-hat-ball", "--perturb", "1", "-o", file}).exit_code == 2);
+  CHECK_FALSE(fs::exists(file));
+  const auto g = run_cmx({"generate-mesh", "--shape", "dunce-hat-ball", "-o", file});
+  INFO(g.err);
+  REQUIRE(g.exit_code == 0);
+  CHECK(g.err.find("27 vertices, 90 tets") != std::string::npos);
+  // topo-expand reads the facet list (orienting it) and, the hat last, is stuck on exactly it.
+  const auto t = run_cmx({"topo-expand", file, "--order", "index"});
+  INFO(t.out << t.err);
+  REQUIRE(t.exit_code == 0);
+  CHECK(t.out.find("(27 vertices, 90 tets; a ball)") != std::string::npos);
+  CHECK(t.out.find("stuck: yes: 8 cluster vertices remain (Euler characteristic 1, b0 1)") !=
+        std::string::npos);
+  CHECK(t.out.find("a shelling of the 90 tets found") != std::string::npos);
+  const auto b = run_cmx({"topo-expand", "--builtin", "dunce-hat-ball", "--order", "index"});
+  CHECK(b.out.find("builtin:dunce-hat-ball (27 vertices, 90 tets; a ball)") != std::string::npos);
+  CHECK(b.out.find("stuck: yes: 8 cluster vertices remain (Euler characteristic 1, b0 1)") !=
+        std::string::npos);
+  // map accepts the deferral with --combinatorial (a combinatorial run starts shrunk) and ends as a
+  // NOBUENOSS, exit 7, with the shelling verdict; without the deferral it maps.
+  const std::string stem = (dir / "m").string();
+  const auto m = run_cmx({"map", file, "--shape", "sphere", "--order", "priority,defer:19-27", "-o", stem});
+  INFO(m.out << m.err);
+  CHECK(m.exit_code == 7);
+  CHECK(m.err.find("NOBUENOSS: 8 cluster vertices left") != std::string::npos);
+  CHECK(m.err.find("a shelling of its 90 tets was found") != std::string::npos);
+  CHECK_FALSE(fs::exists(stem + ".tmap"));
+  REQUIRE(run_cmx({"map", file, "--shape", "sphere", "-o", stem, "--quiet"}).exit_code == 0);
+  CHECK(fs::exists(stem + ".tmap"));
+  // A grid written as a facet list reads back as the same complex.
+  const std::string grid = (dir / "grid.facets").string();
+  REQUIRE(run_cmx({"generate-mesh", "--shape", "grid:2,2,2", "-o", grid, "-q"}).exit_code == 0);
+  const auto tg = run_cmx({"topo-expand", grid});
+  CHECK(tg.out.find("(27 vertices, 48 tets; a ball)") != std::string::npos);
+  fs::remove_all(dir);
+}

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <set>
 
 #include "topo_test_util.hpp"
 #include "topology/ball_check.hpp"
@@ -221,19 +222,20 @@ TEST_CASE("find_shelling starts no attempt once told to stop, but always makes t
 
 namespace {
 
-// What the house-in-a-box constructions promise (topology/nobuenoss.hpp): a shellable ball whose
-// last `house` vertices form a NOBUENOSS that index order, or any order deferring them, meets.
-void check_house_in_box(const GridComplex& g, std::size_t house) {
-  const BallVerdict ball = check_ball(g.mesh);
+// What the house-in-a-box constructions and the dunce-hat ball promise (topology/nobuenoss.hpp): a
+// shellable ball whose last `house` vertices form a NOBUENOSS that index order, or any order
+// deferring them, meets.
+void check_nobuenoss_last(const TetMesh& mesh, std::size_t house) {
+  const BallVerdict ball = check_ball(mesh);
   REQUIRE_MESSAGE(ball.ok, ball.message);
-  const std::size_t n = g.mesh.num_vertices();
+  const std::size_t n = mesh.num_vertices();
   REQUIRE(house > 0);
   // The house's vertices are the last ids and all interior.
-  const std::vector<char> interior = interior_vertex_flags(g.mesh);
+  const std::vector<char> interior = interior_vertex_flags(mesh);
   for (std::size_t v = n - house; v < n; ++v) CHECK(interior[v]);
   // Index order expands every other interior vertex and is left with exactly the house: a
   // NOBUENOSS (Euler characteristic 1, connected, 2-dimensional, no vertex satisfying Eq. (1)).
-  const TopologicalExpansionResult stuck = topological_expansion(g.mesh, *parse_expansion_order("index"));
+  const TopologicalExpansionResult stuck = topological_expansion(mesh, *parse_expansion_order("index"));
   CHECK(stuck.stuck);
   REQUIRE(stuck.remaining.size() == house);
   CHECK(stuck.remaining.front() == VertexId(n - house));
@@ -241,20 +243,20 @@ void check_house_in_box(const GridComplex& g, std::size_t house) {
   CHECK(stuck.remaining_components == 1);
   std::vector<char> left(n, 0);
   for (VertexId v : stuck.remaining) left[v] = 1;
-  const SubcomplexCounts c = subcomplex_counts(g.mesh, VertexSubset(left));
+  const SubcomplexCounts c = subcomplex_counts(mesh, VertexSubset(left));
   CHECK(c.tets == 0);
   CHECK(c.triangles > 0);
   // The default order does not meet it.
-  CHECK(!topological_expansion(g.mesh, {}).stuck);
+  CHECK(!topological_expansion(mesh, {}).stuck);
   // The ball is shellable, and Alg. 2 replays the shelling topologically: in the paper's setting
   // (every vertex unexpanded at first) ...
-  const ShellingResult s = find_shelling(g.mesh, {2, 1, {}});
+  const ShellingResult s = find_shelling(mesh, {2, 1, {}});
   REQUIRE(s.found);
-  const ShellingExpansion e = shelling_to_expansion_sequence(g.mesh, s.order);
+  const ShellingExpansion e = shelling_to_expansion_sequence(mesh, s.order);
   REQUIRE_MESSAGE(e.ok, e.message);
-  CHECK(replay_in_paper_setting(g.mesh, e, 0) == 0);
+  CHECK(replay_in_paper_setting(mesh, e, 0) == 0);
   // ... and in cmx's, with the boundary expanded from the start.
-  const FixedBoundaryReplay f = replay_with_fixed_boundary(g.mesh, e);
+  const FixedBoundaryReplay f = replay_with_fixed_boundary(mesh, e);
   CHECK_MESSAGE(f.ok, f.first_failure);
   CHECK(f.eq1_failures == 0);
   CHECK(f.left == 0);
@@ -271,7 +273,7 @@ void check_house_in_box(const GridComplex& g, std::size_t house) {
   CHECK(f.input_expansions == n - ball.boundary_vertices);
   CHECK(f.expansions == f.input_expansions + f.cluster_splits);
   // shelling_fallback chains the same three steps with its own search (8 attempts, seed 1).
-  const ShellingFallback chained = shelling_fallback(g.mesh);
+  const ShellingFallback chained = shelling_fallback(mesh);
   CHECK(chained.shelling_found);
   REQUIRE(chained.replayed);
   CHECK(chained.replay.ok);
@@ -286,7 +288,7 @@ void check_house_in_box(const GridComplex& g, std::size_t house) {
   for (const char* base : {"priority", "random:1", "random:2"}) {
     const auto order = parse_expansion_order(base + defer);
     REQUIRE(order);
-    const TopologicalExpansionResult d = topological_expansion(g.mesh, *order);
+    const TopologicalExpansionResult d = topological_expansion(mesh, *order);
     CAPTURE(base);
     CHECK(d.stuck);
     CHECK(d.remaining == stuck.remaining);
@@ -298,7 +300,7 @@ void check_house_in_box(const GridComplex& g, std::size_t house) {
 TEST_CASE("Bing's house in a box: shellable, yet greedy index-order expansion meets the house") {
   std::size_t house = 0;
   const GridComplex g = bings_house_in_box(2, &house);
-  check_house_in_box(g, house);
+  check_nobuenoss_last(g.mesh, house);
 }
 
 TEST_CASE("the compact Bing's house in a box: the same, at a fifth of the size") {
@@ -307,7 +309,34 @@ TEST_CASE("the compact Bing's house in a box: the same, at a fifth of the size")
   CHECK(g.mesh.num_tets() == 6720);
   CHECK(g.mesh.num_vertices() == 1485);
   CHECK(house == 309);
-  check_house_in_box(g, house);
+  check_nobuenoss_last(g.mesh, house);
+}
+
+TEST_CASE("the dunce-hat ball: 90 tets, shellable, and greedy expansion with the hat last meets it") {
+  std::size_t hat = 0;
+  const TetMesh mesh = dunce_hat_ball(&hat);
+  CHECK(mesh.num_tets() == 90);
+  CHECK(mesh.num_vertices() == 27);
+  REQUIRE(hat == 8);
+  // The hat is the full subcomplex on the last 8 ids: Hachimori's dunce hat (8 vertices, 24
+  // edges, 17 triangles, no tet), every edge in two triangles or more (no free edge).
+  std::vector<char> on_hat(27, 0);
+  for (std::size_t v = 19; v < 27; ++v) on_hat[v] = 1;
+  const SubcomplexCounts c = subcomplex_counts(mesh, VertexSubset(on_hat));
+  CHECK(c.edges == 24);
+  CHECK(c.triangles == 17);
+  CHECK(c.tets == 0);
+  for (std::uint32_t a = 19; a < 27; ++a)
+    for (std::uint32_t b = a + 1; b < 27; ++b) {
+      std::set<std::uint32_t> apexes;
+      for (TetId t : tets_around_edge(mesh, VertexId(a), VertexId(b)))
+        for (VertexId x : mesh.tet(t))
+          if (x != VertexId(a) && x != VertexId(b) && on_hat[x]) apexes.insert(x);
+      CAPTURE(a);
+      CAPTURE(b);
+      if (!tets_around_edge(mesh, VertexId(a), VertexId(b)).empty()) CHECK(apexes.size() >= 2);
+    }
+  check_nobuenoss_last(mesh, hat);
 }
 
 TEST_CASE(
