@@ -172,14 +172,7 @@ void merge(Embedding& e, const MapOptions& options, RunControl& control, MapStat
   s.collapsed += m.removed;
 }
 
-// After a NOBUENOSS: the shelling search that the fallback of paper Sec. 4.3 starts with
-// (shelling_fallback.hpp). Its verdict completes the stuck message; the outcome stays stuck.
-void search_fallback(const MapProblem& problem, std::size_t threads, RunControl& control, MapResult& r) {
-  const auto phase = Clock::now();
-  control.report("shelling search", 0);
-  const ShellingVerdict v = search_input_shelling(problem.tets, problem.source.size(), 1, &control, 8, threads);
-  MapStatistics& s = r.stats;
-  s.seconds_shelling_search = seconds_since(phase);
+void record_shelling_verdict(const ShellingVerdict& v, MapStatistics& s) {
   s.nobuenoss = true;
   s.shelling_found = v.found;
   s.shelling_attempts = v.attempts;
@@ -189,11 +182,53 @@ void search_fallback(const MapProblem& problem, std::size_t threads, RunControl&
   s.shelling_replay_completed = v.replay_completed;
   s.shelling_replay_expansions = v.replay_expansions;
   s.shelling_replay_empty_cone_steps = v.replay_empty_cone_steps;
+}
+
+// After a NOBUENOSS: the shelling search that the fallback of paper Sec. 4.3 starts with
+// (shelling_fallback.hpp). Its verdict completes the stuck message.
+ShellingVerdict search_fallback(const MapProblem& problem, std::size_t threads, RunControl& control,
+                                MapResult& r) {
+  const auto phase = Clock::now();
+  control.report("shelling search", 0);
+  ShellingVerdict v = search_input_shelling(problem.tets, problem.source.size(), 1, &control, 8, threads);
+  r.stats.seconds_shelling_search = seconds_since(phase);
+  record_shelling_verdict(v, r.stats);
   r.message += "; " + v.message;
+  return v;
+}
+
+// Paper Sec. 4.3 after a NOBUENOSS with a shelling found (ReplayMode::after_nobuenoss): the run
+// again from the shrunk state, replaying the shelling until greedy expansion can take over. The
+// report keeps the greedy run's NOBUENOSS and shelling verdicts; its other counts are the
+// replayed run's. A failure of the replay ends the run as stuck with both reasons.
+ExpansionOutcome replay_after_nobuenoss(const ValidatedProblem& v, const MapOptions& options,
+                                        Clock::time_point start, RunControl& control,
+                                        const MapStatistics& before, const ShellingVerdict& verdict,
+                                        Embedding& e, std::vector<HPoint>& prescribed, MapResult& r) {
+  MapStatistics greedy = std::move(r.stats);
+  r.stats = before;
+  MapStatistics& s = r.stats;
+  record_shelling_verdict(verdict, s);
+  s.seconds_shelling_search = greedy.seconds_shelling_search;
+  e = initial_embedding(v, options.filter, options.placement.arith, &s.filter);
+  auto phase = Clock::now();
+  preprocess(e, v, options, prescribed, r);
+  s.seconds_preprocess = greedy.seconds_preprocess + seconds_since(phase);
+  phase = Clock::now();
+  ExpansionSettings settings = expansion_settings(options, start, control, prescribed, s.input_vertices);
+  settings.replay = ReplayMode::until_greedy;
+  ExpansionOutcome out = expand_cluster(e, settings, s);
+  s.seconds_expand = greedy.seconds_expand + seconds_since(phase);
+  s.replay.after_nobuenoss = true;
+  if (out.outcome != MapOutcome::success)
+    out.message = r.message + "; replayed from the start (--replay-shelling after-nobuenoss), it " +
+                  (out.outcome == MapOutcome::stuck ? "ended: " : "stopped: ") + out.message;
+  return out;
 }
 
 void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapOptions& options, Clock::time_point start,
                 RunControl& control, Embedding& e, MapResult& r) {
+  const MapStatistics before = r.stats;
   MapStatistics& s = r.stats;
   auto phase = Clock::now();
   std::vector<HPoint> prescribed;
@@ -201,11 +236,24 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
   s.seconds_preprocess = seconds_since(phase);
 
   phase = Clock::now();
-  const ExpansionOutcome out = expand_cluster(e, expansion_settings(options, start, control, prescribed, s.input_vertices), s);
+  ExpansionOutcome out =
+      expand_cluster(e, expansion_settings(options, start, control, prescribed, s.input_vertices), s);
   s.seconds_expand = seconds_since(phase);
   r.outcome = out.outcome;
   r.message = out.message;
-  if (out.nobuenoss) search_fallback(problem, options.threads, control, r);
+  if (out.nobuenoss) {
+    const ShellingVerdict verdict = search_fallback(problem, options.threads, control, r);
+    const bool replay = options.replay == ReplayMode::after_nobuenoss && verdict.replay_completed;
+    if (replay && !control.stopped()) {
+      out = replay_after_nobuenoss(v, options, start, control, before, verdict, e, prescribed, r);
+      r.outcome = out.outcome;
+      r.message = out.message;
+    } else if (replay) {
+      r.message += "; not replayed: the run was stopped";
+    } else if (verdict.replay_completed) {
+      r.message += "; not replayed (--replay-shelling " + std::string(to_string(options.replay)) + ")";
+    }
+  }
   if (out.outcome == MapOutcome::success && options.collapse) {
     phase = Clock::now();
     control.report("collapse", 0);

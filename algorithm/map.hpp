@@ -57,10 +57,13 @@ std::optional<ShelledMode> parse_shelled_mode(std::string_view name);
 std::string_view to_string(ShelledMode m);
 
 // Whether the expansion replays a shelling of the input from the start (paper Sec. 4.3, Alg. 2;
-// expansion/shelling_replay.cpp) instead of expanding greedily: off; until_greedy, until
-// topological expansion of the cluster left completes in the run's order, then the greedy loop;
-// full, every step. The names are those of cmx map --replay-shelling.
-enum class ReplayMode : std::uint8_t { off, until_greedy, full };
+// expansion/shelling_replay.cpp): off, never (a NOBUENOSS ends the run as stuck);
+// after_nobuenoss, when the greedy loop ended in a NOBUENOSS and the shelling search found a
+// shelling, the run starts again from the shrunk state with until_greedy; until_greedy, from the
+// start until topological expansion of the cluster left completes (in the run's order and in the
+// same order without its deferral), then the greedy loop; full, every step. The names are those
+// of cmx map --replay-shelling.
+enum class ReplayMode : std::uint8_t { off, after_nobuenoss, until_greedy, full };
 std::optional<ReplayMode> parse_replay_mode(std::string_view name);
 std::string_view to_string(ReplayMode m);
 
@@ -109,7 +112,7 @@ struct MapOptions {
   std::size_t smooth_every = 0;               // Laplacian smoothing period in expansions (0: off)
   bool collapse_refinement = true;            // collapse what each star-shapification added, at once (Sec. 4.2.2)
   ShelledMode shelled = ShelledMode::when_stuck;  // when the loop star-shapifies by shelling
-  ReplayMode replay = ReplayMode::off;            // replay a shelling from the start (Alg. 2)
+  ReplayMode replay = ReplayMode::after_nobuenoss;  // replay a shelling from the start (Alg. 2)
   std::size_t subclusters = 4;                // largest subcluster expanded at once, 2..4 (Sec. 4.2.5); 0 or 1: off
   std::function<void(const MapProgress&)> progress;  // called now and then (about 5 Hz)
   // Polled between steps of every phase with the phase's name ("expansion", "collapse",
@@ -205,7 +208,11 @@ struct MapStatistics {
   // The geometric replay of a shelling (MapOptions::replay, expansion/shelling_replay.cpp).
   struct Replay {
     bool ran = false;
+    bool after_nobuenoss = false;  // run again with the replay because the greedy loop met one
     bool handed_over = false;      // until_greedy: the greedy loop took over
+    // The input vertices the plan expanded, in its order (the other planned expansions are of
+    // the vertices of its splits).
+    std::vector<std::uint32_t> input_vertices;
     std::size_t chord_splits = 0;  // chords split before the shelling
     std::size_t shelling_attempts = 0;
     std::size_t steps = 0;       // of Alg. 2's plan

@@ -21,8 +21,10 @@ constexpr OptionNames<ShelledMode, 3> shelled_mode_names{{{{ShelledMode::when_st
                                                          {ShelledMode::after_pushes, "after-pushes"},
                                                          {ShelledMode::first, "first"}}}};
 
-constexpr OptionNames<ReplayMode, 3> replay_mode_names{
-    {{{ReplayMode::off, "off"}, {ReplayMode::until_greedy, "until-greedy"}, {ReplayMode::full, "full"}}}};
+constexpr OptionNames<ReplayMode, 4> replay_mode_names{{{{ReplayMode::off, "off"},
+                                                         {ReplayMode::after_nobuenoss, "after-nobuenoss"},
+                                                         {ReplayMode::until_greedy, "until-greedy"},
+                                                         {ReplayMode::full, "full"}}}};
 
 }  // namespace
 

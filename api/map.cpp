@@ -74,7 +74,8 @@ std::optional<Failure> parse_options(const MapOptions& in, algorithm::MapOptions
   if (!shelled) return bad("shelled", in.shelled, "is not a shelled star-shapification mode (when-stuck, after-pushes, first)");
   const auto replay = algorithm::parse_replay_mode(in.replay_shelling);
   if (!replay)
-    return bad("replay_shelling", in.replay_shelling, "is not a replay mode (off, until-greedy, full)");
+    return bad("replay_shelling", in.replay_shelling,
+               "is not a replay mode (off, after-nobuenoss, until-greedy, full)");
   const auto snap = algorithm::parse_snap_policy(in.snap);
   if (!snap) return bad("snap", in.snap, "is not a snap policy (repair, chebyshev, nearest, none)");
   const auto precision = algorithm::parse_precision_policy(in.precision);

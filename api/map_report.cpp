@@ -77,10 +77,15 @@ JsonObject expansion_json(const algorithm::MapStatistics& s) {
   ex.num("shelled_pushes", n(s.shelled_pushes)).num("shelled_pushes_left", n(s.shelled_pushes_left));
   if (s.replay.ran) {
     JsonObject rp;
+    rp.flag("after_nobuenoss", s.replay.after_nobuenoss);
     rp.flag("handed_over", s.replay.handed_over).num("chord_splits", n(s.replay.chord_splits));
     rp.num("shelling_attempts", n(s.replay.shelling_attempts)).num("steps", n(s.replay.steps));
     rp.num("splits", n(s.replay.splits)).num("expansions", n(s.replay.expansions));
     rp.num("drained", n(s.replay.drained));
+    std::string ids = "[";
+    for (std::size_t i = 0; i < s.replay.input_vertices.size(); ++i)
+      ids += (i ? ", " : "") + std::to_string(s.replay.input_vertices[i]);
+    rp.raw("input_vertices", ids + "]");
     ex.obj("replay", rp);
   }
   add_collapse_counts(ex, s);

@@ -34,9 +34,10 @@ const HelpText help = {
     "On any failure no map is written (an existing file is left untouched). The report and the trace of\n"
     "a failed run are written only to paths that do not exist yet, unless --report-on-failure.\n"
     "Stuck on a NOBUENOSS (no cluster vertex satisfies Eq. (1)), the run then searches for a shelling\n"
-    "of the input (8 greedy attempts), which the paper's fallback needs, and says whether it found one;\n"
-    "the exit code stays 7. When one is found, --replay-shelling until-greedy maps by replaying it\n"
-    "from the start (paper Alg. 2); on large inputs its refinement can run away.\n"};
+    "of the input (8 greedy attempts), which the paper's fallback needs, and says whether it found one.\n"
+    "When one is found, the run starts again and replays it (paper Alg. 2) until greedy expansion can\n"
+    "take over (--replay-shelling after-nobuenoss); otherwise, or when the replay fails, it ends as\n"
+    "stuck (exit 7) with the reasons. On large inputs the replay's refinement can run away.\n"};
 
 std::string one_of(const std::string& what, const std::string& text, const std::string& choices) {
   return "unknown " + what + " '" + text + "' (" + choices + ")";
@@ -146,13 +147,15 @@ void add_run_options(CLI::App& app, MapArgs& a) {
              "everything else); after-pushes: wherever bends and pushes failed;\n"
              "first: before bends and pushes (these two are for tests and comparisons)")
       ->type_name("MODE");
-  const auto replay = one_of_table("replay mode", algorithm::parse_replay_mode, "off, until-greedy, full");
+  const auto replay =
+      one_of_table("replay mode", algorithm::parse_replay_mode, "off, after-nobuenoss, until-greedy, full");
   add_parsed(app, "--replay-shelling", a.options.replay, replay,
-             "replay a shelling of the input from the start (paper Sec. 4.3, Alg. 2)\n"
-             "instead of expanding greedily: off (default); until-greedy, until\n"
-             "topological expansion of the cluster left completes, then the greedy\n"
-             "loop; full, every step. For a shellable input on which greedy\n"
-             "expansion ends in a NOBUENOSS (the stuck message says when)")
+             "replay a shelling of the input from the start (paper Sec. 4.3, Alg. 2):\n"
+             "after-nobuenoss (default: when greedy expansion ends in a NOBUENOSS\n"
+             "and a shelling is found, the run again with until-greedy); off (never);\n"
+             "until-greedy, from the start until topological expansion of the cluster\n"
+             "left completes in the run's order and in it without its deferral, then\n"
+             "the greedy loop in the latter; full, every step")
       ->type_name("MODE");
 }
 

@@ -60,6 +60,9 @@ class ClusterExpander {
         guess_wrong_(e.properties.make<char>(e.num_vertices(), 0)) {}
 
   ExpansionOutcome run();
+  // Paper Sec. 4.3: the replay of a shelling (MapOptions::replay), once, before run(); success
+  // with the cluster left to the greedy loop when it handed over (shelling_replay.cpp).
+  ExpansionOutcome replay();
   bool refine_by(VertexId v, RefinementStep step);  // cluster_expansion.hpp
   // After run() returned a runaway: the state to go back to.
   std::optional<Checkpoint> take_checkpoint() { return std::move(checkpoint_); }

@@ -367,7 +367,22 @@ bool refine_by(Embedding& e, VertexId v, RefinementStep step, const ExpansionSet
 ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats) {
   ExpansionSettings s = settings;
   if (s.order.kind == topology::ExpansionOrderKind::strict_index) s.planned_vertices = e.num_vertices();
-  std::optional<detail::Checkpoint> first;  // the state before any expansion
+  if (s.replay == ReplayMode::until_greedy || s.replay == ReplayMode::full) {
+    // The plan once; the greedy attempts and their restarts start where it handed over.
+    ExpansionOutcome planned;
+    {
+      detail::ClusterExpander x(e, s, stats);
+      planned = x.replay();
+    }
+    if (planned.outcome != MapOutcome::success || !stats.replay.handed_over) return planned;
+    s.replay = ReplayMode::off;
+    // A deferral is an experiment's way to meet a NOBUENOSS; the replay has led the cluster mesh
+    // past it, and the greedy loop goes on in the order without it (greedy_can_take_over checked
+    // that this order completes topologically too). Kept, it makes the loop expand the deferred
+    // vertices last, each among expanded neighbours only, where the refinement churns.
+    s.order.defer_first = s.order.defer_end = 0;
+  }
+  std::optional<detail::Checkpoint> first;  // the state before any greedy expansion
   if (settings.max_restarts > 0) first = detail::Checkpoint{e, stats, 0};
   for (std::size_t restart = 0;; ++restart) {
     const bool watch = restart < settings.max_restarts;

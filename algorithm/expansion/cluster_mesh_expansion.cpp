@@ -37,14 +37,6 @@ namespace cmx::algorithm::detail {
 
 ExpansionOutcome ClusterExpander::run() {
   for (VertexId v{0}; v < e_.num_vertices(); ++v) cluster_ += e_.unexpanded[v] ? 1 : 0;
-  if (s_.replay != ReplayMode::off) {  // paper Sec. 4.3: the plan first (shelling_replay.cpp)
-    if (ExpansionOutcome planned = replay_shelling();
-        planned.outcome != MapOutcome::success || cluster_ == 0) {
-      report_progress(true);
-      return planned;
-    }
-    aggressive_ = shelling_round_ = false;  // handed over: the greedy loop from here
-  }
   for (VertexId v{0}; v < e_.num_vertices(); ++v)
     if (e_.unexpanded[v]) queue_.mark(v);
   classify_marked();
@@ -103,6 +95,13 @@ ExpansionOutcome ClusterExpander::run() {
   }
   report_progress(true);
   return {MapOutcome::success, {}};
+}
+
+ExpansionOutcome ClusterExpander::replay() {
+  for (VertexId v{0}; v < e_.num_vertices(); ++v) cluster_ += e_.unexpanded[v] ? 1 : 0;
+  ExpansionOutcome planned = replay_shelling();
+  report_progress(planned.outcome != MapOutcome::success || cluster_ == 0);
+  return planned;
 }
 
 // One popped candidate (Alg. 1 lines 9-11 for it).

@@ -84,10 +84,14 @@ void ClusterExpander::replay_drain(const PlannedVertices& planned) {
 }
 
 // Greedy expansion can take over when topological expansion (Eq. (1) alone) of the cluster left
-// completes in the loop's order: the replay has then led the cluster mesh past every NOBUENOSS
-// that order meets without refinement.
+// completes in the run's order and in the same order without its deferral, which the loop then
+// uses (cluster_expansion.cpp): the replay has led the cluster mesh past every NOBUENOSS that
+// either order meets without refinement.
 bool ClusterExpander::greedy_can_take_over() const {
-  return !topology::topological_expansion(e_.mesh, s_.order, e_.unexpanded).stuck;
+  topology::ExpansionOrder plain = s_.order;
+  plain.defer_first = plain.defer_end = 0;
+  return !topology::topological_expansion(e_.mesh, s_.order, e_.unexpanded).stuck &&
+         !topology::topological_expansion(e_.mesh, plain, e_.unexpanded).stuck;
 }
 
 ExpansionOutcome ClusterExpander::replay_failed(const std::string& why) const {
@@ -163,6 +167,7 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
       return replay_failed("could not expand vertex " + std::to_string(v) + " at step " + std::to_string(i) +
                            " of " + std::to_string(plan.steps.size()));
     ++stats_.replay.expansions;
+    if (v.idx() < s_.input_vertices) stats_.replay.input_vertices.push_back(v.idx());
     replay_drain(planned);
     report_progress(false);
   }

@@ -32,11 +32,10 @@ ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, st
   if (v.replay_completed)
     v.message =
         shellable + " and Alg. 2 replays it topologically with the boundary in place (" +
-        std::to_string(v.replay_expansions) + " expansions, each satisfying Eq. (1)), but " +
+        std::to_string(v.replay_expansions) + " expansions, each satisfying Eq. (1); " +
         std::to_string(v.replay_empty_cone_steps) +
-        " of them split a cluster edge whose cone is empty while its ends sit at the shrink point, so "
-        "cmx map does not replay it on its own: --replay-shelling until-greedy replays it from the start, "
-        "but the refinement's own vertices can run away on large inputs (docs/algorithm/expansion.md)";
+        " of them split a cluster edge whose cone is empty while its ends sit at the shrink point, which "
+        "inflation opens)";
   else if (v.found)
     v.message = shellable + ", but Alg. 2's topological replay of it fails (" + f.message +
                 "), so there is no plan to replay geometrically";

@@ -41,8 +41,8 @@ struct ShellingVerdict {
 
 // At most `max_attempts` greedy attempts with seeds derived from `seed`; none but the first
 // starts once `control` (when given) says stop. When a shelling is found it is converted by
-// Alg. 2 and replayed topologically, and the message says why that replay is not run
-// geometrically. O(attempts * T log T) plus the replay.
+// Alg. 2 and replayed topologically, and the message gives that replay's verdict (map.cpp then
+// replays it geometrically unless told not to: ReplayMode). O(attempts * T log T) plus the replay.
 // `threads`: attempts run at once (topology::ShellingOptions::threads; 0: the machine's cores),
 // the verdict the same for every count.
 ShellingVerdict search_input_shelling(const std::vector<topology::Tet>& tets, std::size_t num_vertices,

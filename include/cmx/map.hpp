@@ -79,10 +79,12 @@ struct MapOptions {
   // tests and comparisons: they change runs that the default leaves alone, not always for better.
   std::string shelled = "when-stuck";
   // Replay a shelling of the input from the start (paper Sec. 4.3, Alg. 2) instead of expanding
-  // greedily (cmx map --replay-shelling): off; until-greedy (until topological expansion of the
-  // cluster left completes in the run's order, then the greedy loop); full (every step).
-  // For shellable inputs on which greedy expansion meets a NOBUENOSS; slower elsewhere.
-  std::string replay_shelling = "off";
+  // greedily (cmx map --replay-shelling): after-nobuenoss (when the greedy run ends in a
+  // NOBUENOSS and a shelling is found, the run again with until-greedy); off (never: such a run
+  // ends as stuck); until-greedy (until topological expansion of the cluster left completes in the
+  // run's order and in that order without its deferral, then the greedy loop in the latter); full
+  // (every step). The report's expansion.replay says what was replayed.
+  std::string replay_shelling = "after-nobuenoss";
   bool check = false;           // assert every invariant after every step (slow; for debugging)
   std::string snap = "repair";  // doubles written: repair, chebyshev, nearest
   std::string order = "priority";  // expansion order: priority, index, strict-index, random:SEED[,defer:A-B]

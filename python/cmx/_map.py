@@ -145,13 +145,15 @@ def map(V: Any, T: Any, boundary: Any = None, codomain: Any = None, shape: Optio
     Other options (the fields of cmx::MapOptions, values as `cmx map` takes them): collapse (bool),
     check (bool), snap ("repair", "chebyshev", "nearest"), order ("priority", "index",
     "random:SEED", "strict-index", each optionally followed by ",defer:A-B": input ids A to B-1
-    last; needs init="shrink"), filter ("cascade", "interval", "exact", "mpfr:BITS"), lp ("certified", "exact"),
-    norm ("l2-upper", "l1"), precision, arith ("rational", "double", "mpfr:BITS"), subclusters (int),
-    smooth (int), shelled ("when-stuck", "after-pushes", "first": when the fallback star-shapifies
-    by shelling the cone base), replay_shelling ("off", "until-greedy", "full": replay a shelling
-    of the input from the start, paper Alg. 2), combinatorial (bool: V's values are ignored, T need only be
-    oriented alike, the result realises a subdivision of the complex and its source is the target;
-    give boundary positions). An unknown keyword raises TypeError.
+    last; needs init="shrink" or combinatorial=True), filter ("cascade", "interval", "exact",
+    "mpfr:BITS"), lp ("certified", "exact"), norm ("l2-upper", "l1"), precision, arith
+    ("rational", "double", "mpfr:BITS"), subclusters (int), smooth (int), shelled ("when-stuck",
+    "after-pushes", "first": when the fallback star-shapifies by shelling the cone base),
+    replay_shelling ("after-nobuenoss", the default: when greedy expansion ends in a NOBUENOSS
+    and a shelling is found, the run again replaying it; "off"; "until-greedy", "full": replay a
+    shelling of the input from the start, paper Alg. 2), combinatorial (bool: V's values are
+    ignored, T need only be oriented alike, the result realises a subdivision of the complex and
+    its source is the target; give boundary positions). An unknown keyword raises TypeError.
 
     Returns a cmx.Result. Raises cmx.InvalidInput (bad mesh, index, NaN, boundary, not a ball, not
     star-shaped, ...; .reason names the check) or cmx.InvalidOptions (a value that does not parse),

@@ -184,28 +184,55 @@ TEST_CASE("a run that stalls where the topology allows progress says it is not a
   CHECK_FALSE(r.stats.nobuenoss);
 }
 
-TEST_CASE("the dunce-hat ball: with the hat deferred the run ends as a NOBUENOSS with a shelling found") {
+TEST_CASE(
+    "the dunce-hat ball: with the hat deferred the greedy run meets a NOBUENOSS, and the replay maps it") {
   // topology::dunce_hat_ball is shellable and its last 8 ids span a dunce hat. Deferred, the hat
-  // is what the geometric loop is left with, its refinement included (on the house in a box the
+  // is what the greedy loop is left with, its refinement included (on the house in a box the
   // refinement's pushes change the cluster mesh around the house and the run maps instead).
   const topo::TetMesh ball = topo::dunce_hat_ball();
   std::vector<std::array<std::uint32_t, 4>> facets;
   for (topo::TetId t : ball.live_tets()) facets.push_back(topo::indices_of(ball.tet(t)));
-  for (const auto shape : {cmx::generators::BoundaryShape::sphere, cmx::generators::BoundaryShape::tet}) {
+  for (const auto shape : {cmx::generators::BoundaryShape::sphere, cmx::generators::BoundaryShape::tet,
+                           cmx::generators::BoundaryShape::star}) {
+    CAPTURE(int(shape));
     const alg::MapProblem p = combinatorial_problem(facets, shape);
     alg::MapOptions o;
     o.combinatorial = true;
-    o.check = true;
+    o.check = true;  // every invariant after every step, the replay's included
     o.order = *topo::parse_expansion_order("priority,defer:19-27");
     o.time_limit_seconds = 600;  // a bound for the test only
+    // Told not to replay: stuck on the hat, with the shelling verdict.
+    o.replay = alg::ReplayMode::off;
+    const alg::MapResult stuck = alg::map_to_domain(p, o);
+    INFO(stuck.message);
+    REQUIRE(stuck.outcome == alg::MapOutcome::stuck);
+    CHECK(stuck.stats.nobuenoss);
+    CHECK(stuck.stats.shelling_found);
+    CHECK(stuck.stats.shelling_replay_completed);
+    CHECK(stuck.message.find("NOBUENOSS: 8 cluster vertices left") != std::string::npos);
+    CHECK(stuck.message.find("not replayed (--replay-shelling off)") != std::string::npos);
+    CHECK_FALSE(stuck.stats.replay.ran);
+    // By default the run starts again and replays the shelling until greedy expansion can take
+    // over: a verified realisation, and the report says what was replayed.
+    o.replay = alg::ReplayMode::after_nobuenoss;
     const alg::MapResult r = alg::map_to_domain(p, o);
-    INFO(r.message);
-    REQUIRE(r.outcome == alg::MapOutcome::stuck);
-    CHECK(r.stats.nobuenoss);
+    check_realisation(p, r);
+    CHECK(r.stats.nobuenoss);  // the greedy run's verdict is kept
     CHECK(r.stats.shelling_found);
-    CHECK(r.stats.shelling_replay_completed);
-    CHECK(r.message.find("NOBUENOSS: 8 cluster vertices left") != std::string::npos);
-    // The default order does not meet the hat: the same problem maps.
-    check_realisation(p, map_combinatorially(p));
+    const auto& rp = r.stats.replay;
+    CHECK(rp.ran);
+    CHECK(rp.after_nobuenoss);
+    CHECK(rp.handed_over);
+    CHECK(rp.splits > 0);
+    CHECK(rp.expansions >= rp.splits);
+    CHECK(rp.expansions == rp.splits + rp.input_vertices.size());
+    for (std::uint32_t v : rp.input_vertices) CHECK(v < 27);
+    // Asked for from the start, the replay maps without meeting the hat.
+    o.replay = alg::ReplayMode::until_greedy;
+    const alg::MapResult direct = alg::map_to_domain(p, o);
+    check_realisation(p, direct);
+    CHECK_FALSE(direct.stats.nobuenoss);
+    CHECK(direct.stats.replay.handed_over);
+    CHECK_FALSE(direct.stats.replay.after_nobuenoss);
   }
 }

@@ -122,17 +122,27 @@ TEST_CASE("the dunce-hat ball as a facet list: generate-mesh writes it, topo-exp
   CHECK(b.out.find("builtin:dunce-hat-ball (27 vertices, 90 tets; a ball)") != std::string::npos);
   CHECK(b.out.find("stuck: yes: 8 cluster vertices remain (Euler characteristic 1, b0 1)") !=
         std::string::npos);
-  // map accepts the deferral with --combinatorial (a combinatorial run starts shrunk) and ends as a
-  // NOBUENOSS, exit 7, with the shelling verdict; without the deferral it maps.
+  // map accepts the deferral with --combinatorial (a combinatorial run starts shrunk); the greedy
+  // run meets the hat, a NOBUENOSS, and the run replays a shelling from the start and maps.
   const std::string stem = (dir / "m").string();
-  const auto m = run_cmx({"map", file, "--shape", "sphere", "--order", "priority,defer:19-27", "-o", stem});
+  const auto m = run_cmx({"map", file, "--shape", "sphere", "--order", "priority,defer:19-27", "-o", stem,
+                          "--report", stem + ".json"});
   INFO(m.out << m.err);
-  CHECK(m.exit_code == 7);
-  CHECK(m.err.find("NOBUENOSS: 8 cluster vertices left") != std::string::npos);
-  CHECK(m.err.find("a shelling of its 90 tets was found") != std::string::npos);
-  CHECK_FALSE(fs::exists(stem + ".tmap"));
-  REQUIRE(run_cmx({"map", file, "--shape", "sphere", "-o", stem, "--quiet"}).exit_code == 0);
+  CHECK(m.exit_code == 0);
   CHECK(fs::exists(stem + ".tmap"));
+  const std::string report = file_text(stem + ".json");
+  CHECK(report.find("\"nobuenoss\": true") != std::string::npos);
+  CHECK(report.find("\"after_nobuenoss\": true") != std::string::npos);
+  CHECK(report.find("\"input_vertices\": [") != std::string::npos);
+  // --replay-shelling off: stuck on the hat, exit 7, with the shelling verdict; nothing written.
+  const std::string off = (dir / "off").string();
+  const auto o = run_cmx({"map", file, "--shape", "sphere", "--order", "priority,defer:19-27",
+                          "--replay-shelling", "off", "-o", off});
+  CHECK(o.exit_code == 7);
+  CHECK(o.err.find("NOBUENOSS: 8 cluster vertices left") != std::string::npos);
+  CHECK(o.err.find("a shelling of its 90 tets was found") != std::string::npos);
+  CHECK(o.err.find("not replayed (--replay-shelling off)") != std::string::npos);
+  CHECK_FALSE(fs::exists(off + ".tmap"));
   // A grid written as a facet list reads back as the same complex.
   const std::string grid = (dir / "grid.facets").string();
   REQUIRE(run_cmx({"generate-mesh", "--shape", "grid:2,2,2", "-o", grid, "-q"}).exit_code == 0);

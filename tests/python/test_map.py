@@ -131,6 +131,11 @@ def test_replay_shelling(ball):
     # Alg. 2 replayed from the start maps the small ball too; a misspelt mode is an error.
     V, T = ball
     check_map(cmx.map(V, T, shape="sphere", init="shrink", replay_shelling="full"), V, T)
+    # The modes that replay only after a NOBUENOSS (the default) or never: no NOBUENOSS here.
+    for mode in ("after-nobuenoss", "off"):
+        r = cmx.map(V, T, shape="sphere", init="shrink", replay_shelling=mode)
+        check_map(r, V, T)
+        assert "replay" not in r.report["expansion"]
     with pytest.raises(cmx.InvalidOptions, match=r"option replay_shelling: 'always'"):
         cmx.map(V, T, shape="sphere", replay_shelling="always")
 
