@@ -37,6 +37,14 @@ inline constexpr std::size_t doubles_remap_passes = 3;
 inline constexpr std::size_t vertex_budget_floor = 200000;
 inline constexpr std::size_t vertex_budget_per_input_vertex = 50;
 
+// The replay of a shelling (expansion/shelling_replay.cpp) stops as run away once the mesh has
+// grown by more than per_step x the plan's steps + floor vertices: its drain can add cluster
+// vertices faster than it expands them (6x6x6 grids, the house in a box), and after a NOBUENOSS
+// it runs on its own, possibly without a time limit. Replays that complete stay far below (the
+// dunce-hat ball: under 200 vertices for a bound of 2,539; 5x5x5 grids: a few hundred).
+inline constexpr std::size_t replay_growth_per_step = 16;
+inline constexpr std::size_t replay_growth_floor = 1024;
+
 // Smoothing period (expansions) turned on for the attempts after a runaway restart, when the run
 // did not ask for smoothing itself: random orders on Freudenthal grids of 4,807 and 6,859
 // interior vertices churn until the time limit without it and map with --smooth 10

@@ -214,6 +214,7 @@ class ClusterExpander {
   // vertices of its splits; the others were added by the refinement.
   struct PlannedVertices {
     std::uint32_t first = 0;
+    std::size_t vertex_bound = 0;  // beyond it the replay ran away (tuning::replay_growth_*)
     std::unordered_set<VertexId> splits;
     bool contains(VertexId v) const { return v.idx() < first || splits.count(v) > 0; }
   };

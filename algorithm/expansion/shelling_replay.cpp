@@ -6,6 +6,7 @@
 
 #include "algorithm/expansion/cluster_expander.hpp"
 #include "algorithm/map_error.hpp"
+#include "algorithm/tuning.hpp"
 #include "topology/chords.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/shelling.hpp"
@@ -63,7 +64,7 @@ bool ClusterExpander::replay_expand(VertexId v) {
 // start there.
 void ClusterExpander::replay_drain(const PlannedVertices& planned) {
   const auto own = [&](VertexId u) { return e_.unexpanded[u] && !planned.contains(u); };
-  while (cluster_ > 0 && !check_limits()) {
+  while (cluster_ > 0 && !check_limits() && e_.num_vertices() <= planned.vertex_bound) {
     bool progress = false;
     for (VertexId u{planned.first}; u < e_.num_vertices(); ++u) {
       if (!own(u)) continue;
@@ -125,10 +126,20 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
   aggressive_ = shelling_round_ = true;  // every refinement the loop has, at once
   std::vector<VertexId> geo;             // plan vertex -> vertex of the embedding (invalid: skipped)
   for (std::size_t i = 0; i < e_.num_vertices(); ++i) geo.push_back(VertexId(static_cast<std::uint32_t>(i)));
-  PlannedVertices planned{static_cast<std::uint32_t>(e_.num_vertices()), {}};
+  PlannedVertices planned{
+      static_cast<std::uint32_t>(e_.num_vertices()),
+      e_.num_vertices() + tuning::replay_growth_per_step * plan.steps.size() + tuning::replay_growth_floor,
+      {}};
+  const auto ran_away = [&] {
+    return replay_failed("ran away: its refinement grew the mesh to " + std::to_string(e_.num_vertices()) +
+                         " vertices, beyond " + std::to_string(planned.vertex_bound) + " (" +
+                         std::to_string(tuning::replay_growth_per_step) + " per step of its plan and " +
+                         std::to_string(tuning::replay_growth_floor) + ")");
+  };
   std::size_t next_check = 0;  // replayed expansions before the next handover check
   for (std::size_t i = 0; i < plan.steps.size() && cluster_ > 0; ++i) {
     if (auto stop = check_limits()) return *stop;
+    if (e_.num_vertices() > planned.vertex_bound) return ran_away();
     if (s_.replay == ReplayMode::until_greedy && stats_.replay.expansions >= next_check) {
       if (greedy_can_take_over()) {
         stats_.replay.handed_over = true;
@@ -173,6 +184,8 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
   }
   if (stats_.replay.handed_over) return {MapOutcome::success, {}};
   replay_drain(planned);
+  if (auto stop = check_limits()) return *stop;
+  if (e_.num_vertices() > planned.vertex_bound) return ran_away();
   if (cluster_ > 0) return replay_failed("ended with cluster vertices left");
   report_progress(true);
   return {MapOutcome::success, {}};

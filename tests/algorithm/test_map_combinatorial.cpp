@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algorithm/map.hpp"
+#include "algorithm/tuning.hpp"
 #include "algorithm/verify/verify_subdivision.hpp"
 #include "arith/rounding.hpp"
 #include "generators/boundary_shapes.hpp"
@@ -235,4 +236,27 @@ TEST_CASE(
     CHECK(direct.stats.replay.handed_over);
     CHECK_FALSE(direct.stats.replay.after_nobuenoss);
   }
+}
+
+TEST_CASE("the dunce-hat ball: a full replay of its shelling runs away and stops at its growth bound") {
+  // Replaying every step of Alg. 2 (no handover) drains the refinement's own vertices, which
+  // leave more behind than they take: the replay stops once the mesh passes its bound
+  // (tuning::replay_growth_per_step per step of the plan, plus tuning::replay_growth_floor).
+  const topo::TetMesh ball = topo::dunce_hat_ball();
+  std::vector<std::array<std::uint32_t, 4>> facets;
+  for (topo::TetId t : ball.live_tets()) facets.push_back(topo::indices_of(ball.tet(t)));
+  const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::sphere);
+  alg::MapOptions o;
+  o.combinatorial = true;
+  o.replay = alg::ReplayMode::full;
+  o.time_limit_seconds = 600;  // a bound for the test only
+  const alg::MapResult r = alg::map_to_domain(p, o);
+  INFO(r.message);
+  REQUIRE(r.outcome == alg::MapOutcome::stuck);
+  CHECK(r.message.find("the replay of a shelling (paper Alg. 2) ran away") != std::string::npos);
+  CHECK_FALSE(r.stats.replay.handed_over);
+  CHECK(r.stats.replay.expansions > 0);
+  const std::size_t bound =
+      27 + alg::tuning::replay_growth_per_step * r.stats.replay.steps + alg::tuning::replay_growth_floor;
+  CHECK(r.message.find("beyond " + std::to_string(bound)) != std::string::npos);
 }
