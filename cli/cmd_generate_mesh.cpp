@@ -8,7 +8,7 @@
 //   bings-house-box[:S] the same house in a full box, its vertices numbered last (shellable;
 //                      greedy `index` order meets the house as a NOBUENOSS), S even, default 2
 //   compact-bings-house-box[:S] the same with a compact house (5 times fewer tets)
-//   dunce-hat-ball     a 90-tet shellable ball meeting a dunce hat (topology::dunce_hat_ball),
+//   dunce-hat-ball[:C] a 90-tet shellable ball meeting a dunce hat (topology::dunce_hat_ball, C collars),
 //                      combinatorial only: written as a facet list (.facets)
 //   knotted-hole[:S]   Furch's knotted hole, S cells per lattice unit (its cluster mesh erodes to a
 //   NOBUENOSS) fingers:F,W,L      a palm with F bent fingers of W x W cells and length L (thin parts)
@@ -73,7 +73,7 @@ std::optional<ShapeRequest> parse_shape(const std::string& text) {
   if (text == "bings-house-box") return ShapeRequest{'H', {2}};
   if (text == "compact-bings-house-box") return ShapeRequest{'C', {2}};
   if (text == "knotted-hole") return ShapeRequest{'k', {1}};
-  if (text == "dunce-hat-ball") return ShapeRequest{'d', {}};
+  if (text == "dunce-hat-ball") return ShapeRequest{'d', {1}};
   const auto colon = text.find(':');
   if (colon == std::string::npos) return std::nullopt;
   const std::string name = text.substr(0, colon);
@@ -86,6 +86,7 @@ std::optional<ShapeRequest> parse_shape(const std::string& text) {
   if (name == "bings-house-box" && n == 1) return ShapeRequest{'H', *dims};
   if (name == "compact-bings-house-box" && n == 1) return ShapeRequest{'C', *dims};
   if (name == "knotted-hole" && n == 1) return ShapeRequest{'k', *dims};
+  if (name == "dunce-hat-ball" && n == 1 && (*dims)[0] <= 64) return ShapeRequest{'d', *dims};
   if (name == "fingers" && n == 3) return ShapeRequest{'f', *dims};
   if (name == "slab" && (n == 2 || (n == 3 && (*dims)[2] <= 2))) return ShapeRequest{'s', *dims};
   return std::nullopt;
@@ -118,7 +119,7 @@ void add_options(CLI::App& app, GenerateArgs& a) {
       throw std::invalid_argument(
           "bad shape '" + text +
           "' (grid:NX,NY,NZ, ball:R, slab:NX,NY[,1|2], bings-house[:S], bings-house-box[:S], "
-          "compact-bings-house-box[:S], dunce-hat-ball, knotted-hole[:S] or fingers:F,W,L)");
+          "compact-bings-house-box[:S], dunce-hat-ball[:C], knotted-hole[:S] or fingers:F,W,L)");
     if (cell_count(*s) > max_cells) throw std::invalid_argument("'" + text + "' has more than " + std::to_string(max_cells) + " cells");
     a.shape_text = text;
     return *s;
@@ -135,9 +136,10 @@ void add_options(CLI::App& app, GenerateArgs& a) {
              "greedy expansion in index order meets the house as a NOBUENOSS);\n"
              "compact-bings-house-box[:S] (the same with a compact house, 6720\n"
              "tets at S = 2, the last 309 vertices on the house);\n"
-             "dunce-hat-ball (90 tets, shellable, stuck on a dunce hat on ids\n"
-             "19-26 in index order; no positions: OUT must be .facets, for\n"
-             "cmx map --combinatorial and cmx topo-expand);\n"
+             "dunce-hat-ball[:C] (90 tets, shellable, stuck on a dunce hat on ids\n"
+             "19-26 in index order; C collars, 1-64, default 1, each adding 6\n"
+             "vertices and 24 tets, the hat on the last 8 ids; no positions: OUT\n"
+             "must be .facets, for cmx map --combinatorial and cmx topo-expand);\n"
              "fingers:F,W,L (a palm with F bent fingers of W x W cells, length L;\n"
              "F 1-16, W 2-8, L 1-400); at most 2000000 cells (of the bounding grid)")
       ->type_name("SHAPE")
@@ -195,7 +197,7 @@ int run(const std::vector<std::string>& args) {
   check_writable({a.output});
   if (a.shape.kind == 'd') {
     std::vector<io::Tet> tets;
-    const topology::TetMesh mesh = topology::dunce_hat_ball();
+    const topology::TetMesh mesh = topology::dunce_hat_ball(nullptr, a.shape.dims[0]);
     for (auto t : mesh.live_tets()) tets.push_back(topology::indices_of(mesh.tet(t)));
     io::write_facet_list(a.output, tets);
     note("wrote " + a.output + ": " + std::to_string(mesh.num_vertices()) + " vertices, " +

@@ -75,6 +75,14 @@ std::vector<char> simply_connected_interior(Input& in) {
   return std::move(c.interior);
 }
 
+// "C", a decimal from 1 to 64; nullopt otherwise.
+std::optional<std::uint32_t> parse_collars(const std::string& text) {
+  if (text.empty() || text.size() > 2 || text.find_first_not_of("0123456789") != std::string::npos)
+    return std::nullopt;
+  const auto c = static_cast<std::uint32_t>(std::stoul(text));
+  return c >= 1 && c <= 64 ? std::optional(c) : std::nullopt;
+}
+
 // "NX,NY,NZ" with each a positive decimal; nullopt when malformed or too large.
 std::optional<std::array<std::uint32_t, 3>> parse_grid_size(const std::string& text) {
   std::array<std::uint32_t, 3> n{};
@@ -102,6 +110,10 @@ TetMesh builtin_mesh(const std::string& name) {
   if (name == "bings-house-box") return topology::bings_house_in_box().mesh;
   if (name == "compact-bings-house-box") return topology::compact_bings_house_in_box().mesh;
   if (name == "dunce-hat-ball") return topology::dunce_hat_ball();
+  if (name.rfind("dunce-hat-ball:", 0) == 0) {
+    if (const auto c = parse_collars(name.substr(15))) return topology::dunce_hat_ball(nullptr, *c);
+    usage_error("--builtin: bad collar count '" + name + "' (want dunce-hat-ball:C, C from 1 to 64)");
+  }
   if (name.rfind("grid:", 0) == 0) {
     if (const auto n = parse_grid_size(name.substr(5)))
       return topology::grid_complex((*n)[0], (*n)[1], (*n)[2]).mesh;
@@ -110,7 +122,7 @@ TetMesh builtin_mesh(const std::string& name) {
   }
   usage_error("--builtin: unknown builtin '" + name +
               "' (knotted-hole, unknotted-hole, bings-house, bings-house-box, compact-bings-house-box, "
-              "dunce-hat-ball, grid:NX,NY,NZ)");
+              "dunce-hat-ball[:C], grid:NX,NY,NZ)");
 }
 
 void print_fallback_json(const std::optional<topology::ShellingFallback>& f) {
@@ -241,8 +253,9 @@ int run(const std::vector<std::string>& args) {
                  "with a knotted hole: gets stuck), unknotted-hole (its control),\n"
                  "bings-house, bings-house-box (the house in a shellable box, stuck on\n"
                  "the house in index order only), compact-bings-house-box (the same,\n"
-                 "compact: 6720 tets, the house on ids 1176-1484), dunce-hat-ball (90\n"
-                 "tets, stuck on a dunce hat, ids 19-26, in index order; shellable),\n"
+                 "compact: 6720 tets, the house on ids 1176-1484), dunce-hat-ball[:C]\n"
+                 "(90 tets, stuck on a dunce hat, ids 19-26, in index order; shellable;\n"
+                 "C collars, 1-64, each 6 vertices more, the hat on the last 8 ids),\n"
                  "grid:NX,NY,NZ\n"
                  "(Freudenthal grid of NX*NY*NZ cells, 6 tets each)")
       ->type_name("NAME");

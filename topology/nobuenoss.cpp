@@ -401,7 +401,8 @@ void add_collar(std::vector<Simplex>& tets, std::uint32_t& next) {
 
 }  // namespace
 
-TetMesh dunce_hat_ball(std::size_t* hat_vertices) {
+TetMesh dunce_hat_ball(std::size_t* hat_vertices, std::uint32_t collars) {
+  if (collars < 1 || collars > 64) throw std::invalid_argument("dunce_hat_ball: collars must be 1 to 64");
   std::vector<Simplex> tets = cyclic_polytope_boundary();
   // Edge (2, 8) of the cyclic polytope (positions), whose link is positions 1, 3, 7.
   move_3_2(tets, on_moment_curve[2], on_moment_curve[8],
@@ -413,7 +414,7 @@ TetMesh dunce_hat_ball(std::size_t* hat_vertices) {
   for (int k : {2, 3})
     for (auto f = foreign_faces(tets, k); !f.empty(); f = foreign_faces(tets, k))
       stellar_subdivide(tets, f.front(), next++);
-  add_collar(tets, next);
+  for (std::uint32_t c = 0; c < collars; ++c) add_collar(tets, next);
   // Ids: 9.. (subdivision vertices, then collar copies) to 0.., the dunce hat's 1..8 last.
   const std::uint32_t others = next - 9;
   const auto id = [&](std::uint32_t v) { return VertexId{v > 8 ? v - 9 : others + v - 1}; };

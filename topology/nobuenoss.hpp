@@ -61,10 +61,12 @@ namespace cmx::topology {
 //   3. that sphere minus the tet (1, 2, 4, 5): a ball containing D;
 //   4. stellar subdivisions of the simplices spanned by D's vertices that are not D's (edges
 //      first, then triangles), so that D is the full subcomplex on its vertices;
-//   5. a collar on the boundary, so that every vertex so far is interior.
-// Numbering: the 13 vertices of step 4 first, the collar's 6 outer copies (the boundary) next,
-// D's vertices last (ids 19 to 26; `hat_vertices` receives 8). Expanding D last (index order, or
-// any order with D deferred) gets stuck on exactly D; greedy shelling shells the ball.
-[[nodiscard]] TetMesh dunce_hat_ball(std::size_t* hat_vertices = nullptr);
+//   5. a collar on the boundary, so that every vertex so far is interior; `collars` (1 to 64) of
+//      them, each around the last, put the hat deeper inside (6 vertices and 24 tets each).
+// Numbering: the 13 vertices of step 4 first, the collars' copies next (the last 6 are the
+// boundary), D's vertices last (ids 19 to 26 with one collar; `hat_vertices` receives 8). Expanding
+// D last (index order, or any order with D deferred) gets stuck on exactly D; greedy shelling
+// shells the ball.
+[[nodiscard]] TetMesh dunce_hat_ball(std::size_t* hat_vertices = nullptr, std::uint32_t collars = 1);
 
 }  // namespace cmx::topology

@@ -122,6 +122,17 @@ TEST_CASE("the dunce-hat ball as a facet list: generate-mesh writes it, topo-exp
   CHECK(b.out.find("builtin:dunce-hat-ball (27 vertices, 90 tets; a ball)") != std::string::npos);
   CHECK(b.out.find("stuck: yes: 8 cluster vertices remain (Euler characteristic 1, b0 1)") !=
         std::string::npos);
+  // Collars: dunce-hat-ball:C, C from 1 to 64, the hat still on the last 8 ids.
+  const auto c3 =
+      run_cmx({"topo-expand", "--builtin", "dunce-hat-ball:3", "--order", "index", "--fallback", "none"});
+  CHECK(c3.out.find("(39 vertices, 138 tets; a ball)") != std::string::npos);
+  CHECK(c3.out.find("stuck: yes: 8 cluster vertices remain") != std::string::npos);
+  CHECK(run_cmx({"topo-expand", "--builtin", "dunce-hat-ball:0"}).exit_code == 2);
+  CHECK(run_cmx({"generate-mesh", "--shape", "dunce-hat-ball:65", "-o", file}).exit_code == 2);
+  const std::string file3 = (dir / "dunce3.facets").string();
+  const auto g3 = run_cmx({"generate-mesh", "--shape", "dunce-hat-ball:3", "-o", file3});
+  CHECK(g3.exit_code == 0);
+  CHECK(g3.err.find("39 vertices, 138 tets") != std::string::npos);
   // map accepts the deferral with --combinatorial (a combinatorial run starts shrunk); the greedy
   // run meets the hat, a NOBUENOSS, and the run replays a shelling from the start and maps.
   const std::string stem = (dir / "m").string();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <set>
+#include <stdexcept>
 
 #include "topo_test_util.hpp"
 #include "topology/ball_check.hpp"
@@ -337,6 +338,13 @@ TEST_CASE("the dunce-hat ball: 90 tets, shellable, and greedy expansion with the
       if (!tets_around_edge(mesh, VertexId(a), VertexId(b)).empty()) CHECK(apexes.size() >= 2);
     }
   check_nobuenoss_last(mesh, hat);
+  // More collars put the hat deeper: 6 vertices and 24 tets each, the same promises.
+  const TetMesh deeper = dunce_hat_ball(&hat, 3);
+  CHECK(deeper.num_vertices() == 39);
+  CHECK(deeper.num_tets() == 138);
+  check_nobuenoss_last(deeper, hat);
+  CHECK_THROWS_AS((void)dunce_hat_ball(nullptr, 0), std::invalid_argument);
+  CHECK_THROWS_AS((void)dunce_hat_ball(nullptr, 65), std::invalid_argument);
 }
 
 TEST_CASE(
