@@ -54,7 +54,7 @@ std::string fallback_message(const ShellingFallback& f) {
 }  // namespace
 
 FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const ShellingExpansion& sequence,
-                                               std::size_t check_every) {
+                                               std::size_t check_every, const ReplayStop& stop_when) {
   FixedBoundaryReplay r;
   TetMesh m = input;
   const std::vector<char> boundary = boundary_vertex_flags(m);
@@ -116,6 +116,11 @@ FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const Shell
     unexpanded[st.vertex] = 0;
     --cluster_left;
     if (check_every > 0 && r.expansions % check_every == 0) check(m, "after step " + std::to_string(i));
+    if (stop_when && stop_when(m, unexpanded)) {
+      r.stopped = true;
+      r.left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
+      return r;
+    }
   }
   if (check_every > 0 && r.expansions % check_every != 0) check(m, "after the last step");
   r.left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));

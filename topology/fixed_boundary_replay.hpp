@@ -22,6 +22,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,7 +45,11 @@ struct FixedBoundaryReplay {
   std::vector<char> step_expanded;         // per step: 1 when it expanded a cluster vertex (0: skipped)
   std::size_t checks = 0;                  // cluster meshes checked to be simply connected (check_every)
   std::size_t check_failures = 0;  // of those, not empty and not connected with Euler characteristic 1
+  bool stopped = false;            // `stop_when` returned true (after `expansions` expansions)
 };
+
+// Asked after each expansion with the mesh and the cluster flags then; true stops the replay.
+using ReplayStop = std::function<bool(const TetMesh& mesh, const std::vector<char>& unexpanded)>;
 
 // Preconditions: `input` is the mesh `sequence` was computed from
 // (shelling_to_expansion_sequence), `sequence.ok`, and check_ball(input).ok. O(T) plus the
@@ -52,9 +57,12 @@ struct FixedBoundaryReplay {
 // before the first expansion, after every k-th and at the end to be empty or connected with
 // Euler characteristic 1 (Corollary 1: Eq. (1) expansions keep it simply connected), O(T) each;
 // a failed check fails the replay.
+// `stop_when` (when given) can end the replay early, e.g. once greedy expansion could take over
+// (algorithm/expansion/shelling_replay.cpp picks its plan so); `ok` is then false.
 [[nodiscard]] FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input,
                                                              const ShellingExpansion& sequence,
-                                                             std::size_t check_every = 0);
+                                                             std::size_t check_every = 0,
+                                                             const ReplayStop& stop_when = {});
 
 // The fallback of paper Sec. 4.3 for a run without geometry (cmx topo-expand): split every
 // chord of `input`, look for a shelling of the result (find_shelling, bounded by `options`) and,

@@ -19,6 +19,7 @@
 #include "algorithm/expansion/expansion_cone.hpp"
 #include "algorithm/expansion/placement.hpp"
 #include "topology/cluster_links.hpp"
+#include "topology/shelling.hpp"
 
 namespace cmx::algorithm::detail {
 
@@ -220,6 +221,7 @@ class ClusterExpander {
   };
   void replay_drain(const PlannedVertices& planned);
   bool greedy_can_take_over() const;
+  std::optional<topology::ShellingExpansion> choose_replay_plan(std::string& why);
   ExpansionOutcome replay_failed(const std::string& why) const;
 
   Embedding& e_;

@@ -2,6 +2,7 @@
 // expansion sequence and each of its steps is made with the loop's own refinement
 // (ClusterExpander::replay_shelling, docs/algorithm/expansion.md "Replaying a shelling").
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <unordered_set>
 
@@ -10,6 +11,7 @@
 #include "algorithm/tuning.hpp"
 #include "topology/chords.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/fixed_boundary_replay.hpp"
 #include "topology/shelling.hpp"
 #include "topology/topological_expansion.hpp"
 
@@ -23,6 +25,15 @@ namespace {
 // over after 16 instead of 8, with three times the vertices; with 1 or 2 more collars, 32 instead
 // of 22 and 48 instead of 46).
 constexpr std::size_t handover_check_fraction = 8;
+
+// Topological expansion of the cluster left completes in `order` and in it without its deferral.
+bool can_take_over(const topology::TetMesh& m, const topology::ExpansionOrder& order,
+                   const std::vector<char>& unexpanded) {
+  topology::ExpansionOrder plain = order;
+  plain.defer_first = plain.defer_end = 0;
+  return !topology::topological_expansion(m, order, unexpanded).stuck &&
+         !topology::topological_expansion(m, plain, unexpanded).stuck;
+}
 
 bool simplex_exists(const topology::TetMesh& m, const VertexId* s, int n) {
   return n == 2 ? !topology::tets_around_edge(m, s[0], s[1]).empty()
@@ -95,10 +106,51 @@ void ClusterExpander::replay_drain(const PlannedVertices& planned) {
 // uses (cluster_expansion.cpp): the replay has led the cluster mesh past every NOBUENOSS that
 // either order meets without refinement.
 bool ClusterExpander::greedy_can_take_over() const {
-  topology::ExpansionOrder plain = s_.order;
-  plain.defer_first = plain.defer_end = 0;
-  return !topology::topological_expansion(e_.mesh, s_.order, e_.unexpanded).stuck &&
-         !topology::topological_expansion(e_.mesh, plain, e_.unexpanded).stuck;
+  return can_take_over(e_.mesh, s_.order, e_.unexpanded);
+}
+
+// The plan to replay: until_greedy compares the shellings of tuning::replay_plan_seeds seeds by
+// how many expansions their topological replay (topology::replay_with_fixed_boundary, asking as
+// the geometric replay does) takes before greedy expansion could take over, and keeps the one
+// that needs fewest (the first seed on a tie): each replayed step costs refinement, and on the
+// dunce-hat ball with more collars the seeds whose plans reach the hand-over sooner are the ones
+// whose geometric replay does not run away. full takes the first seed's plan.
+std::optional<topology::ShellingExpansion> ClusterExpander::choose_replay_plan(std::string& why) {
+  const std::vector<char> interior = e_.unexpanded;  // every interior vertex is in the cluster now
+  const std::size_t seeds = s_.replay == ReplayMode::until_greedy ? tuning::replay_plan_seeds : 1;
+  std::optional<topology::ShellingExpansion> best;
+  std::size_t best_handover = 0;
+  for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
+    if (seed > 1 && check_limits()) break;
+    topology::ShellingOptions options;  // one seeded attempt series on this thread
+    options.interior = &interior;
+    options.seed = seed;
+    const topology::ShellingResult shelling = topology::find_shelling(e_.mesh, options);
+    stats_.replay.shelling_attempts += shelling.attempts;
+    if (!shelling.found) {
+      if (why.empty()) why = "found no shelling: " + shelling.message;
+      continue;
+    }
+    topology::ShellingExpansion plan = topology::shelling_to_expansion_sequence(e_.mesh, shelling.order);
+    if (!plan.ok) {
+      if (why.empty()) why = "could not convert the shelling: " + plan.message;
+      continue;
+    }
+    if (seeds == 1) return plan;
+    std::size_t asked = 0, next = 0;
+    const topology::FixedBoundaryReplay sim = topology::replay_with_fixed_boundary(
+        e_.mesh, plan, 0, [&](const topology::TetMesh& m, const std::vector<char>& unexpanded) {
+          if (++asked < next) return false;
+          next = asked + std::max<std::size_t>(1, asked / handover_check_fraction);
+          return can_take_over(m, s_.order, unexpanded);
+        });
+    const std::size_t handover = sim.stopped ? sim.expansions : plan.steps.size() + 1;
+    if (!best || handover < best_handover) {
+      best = std::move(plan);
+      best_handover = handover;
+    }
+  }
+  return best;
 }
 
 ExpansionOutcome ClusterExpander::replay_failed(const std::string& why) const {
@@ -120,14 +172,10 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
   stats_.replay = {};
   stats_.replay.ran = true;
   replay_split_chords();
-  topology::ShellingOptions options;  // one seeded attempt series on this thread, as its defaults say
-  const std::vector<char> interior = e_.unexpanded;  // every interior vertex is in the cluster now
-  options.interior = &interior;
-  const topology::ShellingResult shelling = topology::find_shelling(e_.mesh, options);
-  stats_.replay.shelling_attempts = shelling.attempts;
-  if (!shelling.found) return replay_failed("found no shelling: " + shelling.message);
-  const topology::ShellingExpansion plan = topology::shelling_to_expansion_sequence(e_.mesh, shelling.order);
-  if (!plan.ok) return replay_failed("could not convert the shelling: " + plan.message);
+  std::string why;
+  const std::optional<topology::ShellingExpansion> chosen = choose_replay_plan(why);
+  if (!chosen) return replay_failed(why);
+  const topology::ShellingExpansion& plan = *chosen;
   stats_.replay.steps = plan.steps.size();
   aggressive_ = shelling_round_ = true;  // every refinement the loop has, at once
   std::vector<VertexId> geo;             // plan vertex -> vertex of the embedding (invalid: skipped)

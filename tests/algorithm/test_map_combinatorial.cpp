@@ -260,3 +260,28 @@ TEST_CASE("the dunce-hat ball: a full replay of its shelling runs away and stops
       27 + alg::tuning::replay_growth_per_step * r.stats.replay.steps + alg::tuning::replay_growth_floor;
   CHECK(r.message.find("beyond " + std::to_string(bound)) != std::string::npos);
 }
+
+TEST_CASE(
+    "the dunce-hat ball with three collars: the replay picks the plan that hands over soonest and maps") {
+  // Deeper inside, the hat needs more of a plan before greedy expansion can take over; among the
+  // plans of several shellings the replay keeps the one whose topological replay gets there first
+  // (tuning::replay_plan_seeds): 33 planned expansions, where the first seed's plan took 46 and
+  // its greedy loop then stalled.
+  std::size_t hat = 0;
+  const topo::TetMesh ball = topo::dunce_hat_ball(&hat, 3);
+  std::vector<std::array<std::uint32_t, 4>> facets;
+  for (topo::TetId t : ball.live_tets()) facets.push_back(topo::indices_of(ball.tet(t)));
+  const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::sphere);
+  alg::MapOptions o;
+  o.combinatorial = true;
+  o.check = true;
+  o.order = *topo::parse_expansion_order("priority,defer:" + std::to_string(ball.num_vertices() - hat) + "-" +
+                                         std::to_string(ball.num_vertices()));
+  o.time_limit_seconds = 600;  // a bound for the test only
+  const alg::MapResult r = alg::map_to_domain(p, o);
+  check_realisation(p, r);
+  CHECK(r.stats.nobuenoss);
+  CHECK(r.stats.replay.after_nobuenoss);
+  CHECK(r.stats.replay.handed_over);
+  CHECK(r.stats.replay.shelling_attempts >= alg::tuning::replay_plan_seeds);  // every seed's plan compared
+}

@@ -343,6 +343,23 @@ TEST_CASE("the dunce-hat ball: 90 tets, shellable, and greedy expansion with the
   CHECK(deeper.num_vertices() == 39);
   CHECK(deeper.num_tets() == 138);
   check_nobuenoss_last(deeper, hat);
+  // The replay can be stopped once a condition holds: here, at the first vertex of the hat.
+  const ShellingResult s = find_shelling(mesh, {2, 1, {}});
+  REQUIRE(s.found);
+  const ShellingExpansion e = shelling_to_expansion_sequence(mesh, s.order);
+  REQUIRE(e.ok);
+  const FixedBoundaryReplay whole = replay_with_fixed_boundary(mesh, e);
+  CHECK_FALSE(whole.stopped);
+  const FixedBoundaryReplay part =
+      replay_with_fixed_boundary(mesh, e, 0, [](const TetMesh&, const std::vector<char>& unexpanded) {
+        for (std::size_t v = 19; v < 27; ++v)
+          if (!unexpanded[v]) return true;
+        return false;
+      });
+  CHECK(part.stopped);
+  CHECK_FALSE(part.ok);
+  CHECK(part.expansions < whole.expansions);
+  CHECK(part.left > 0);
   CHECK_THROWS_AS((void)dunce_hat_ball(nullptr, 0), std::invalid_argument);
   CHECK_THROWS_AS((void)dunce_hat_ball(nullptr, 65), std::invalid_argument);
 }
