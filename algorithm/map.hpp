@@ -61,8 +61,8 @@ std::string_view to_string(ShelledMode m);
 // after_nobuenoss, when the greedy loop ended in a NOBUENOSS and the shelling search found a
 // shelling, the run starts again from the shrunk state with until_greedy; until_greedy, from the
 // start until topological expansion of the cluster left completes (in the run's order and in the
-// same order without its deferral), then the greedy loop; full, every step. The names are those
-// of cmx map --replay-shelling.
+// same order without its deferral), then the greedy loop, replaying of 8 shellings the plan that
+// gets there soonest; full, every step. The names are those of cmx map --replay-shelling.
 enum class ReplayMode : std::uint8_t { off, after_nobuenoss, until_greedy, full };
 std::optional<ReplayMode> parse_replay_mode(std::string_view name);
 std::string_view to_string(ReplayMode m);

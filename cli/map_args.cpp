@@ -155,7 +155,8 @@ void add_run_options(CLI::App& app, MapArgs& a) {
              "and a shelling is found, the run again with until-greedy); off (never);\n"
              "until-greedy, from the start until topological expansion of the cluster\n"
              "left completes in the run's order and in it without its deferral, then\n"
-             "the greedy loop in the latter; full, every step")
+             "the greedy loop in the latter (of 8 shellings, the one whose plan gets\n"
+             "there soonest); full, every step (of the first shelling found)")
       ->type_name("MODE");
 }
 

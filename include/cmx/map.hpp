@@ -82,8 +82,9 @@ struct MapOptions {
   // greedily (cmx map --replay-shelling): after-nobuenoss (when the greedy run ends in a
   // NOBUENOSS and a shelling is found, the run again with until-greedy); off (never: such a run
   // ends as stuck); until-greedy (until topological expansion of the cluster left completes in the
-  // run's order and in that order without its deferral, then the greedy loop in the latter); full
-  // (every step). The report's expansion.replay says what was replayed.
+  // run's order and in that order without its deferral, then the greedy loop in the latter; of 8
+  // shellings, the plan that gets there soonest); full (every step). The report's
+  // expansion.replay says what was replayed.
   std::string replay_shelling = "after-nobuenoss";
   bool check = false;           // assert every invariant after every step (slow; for debugging)
   std::string snap = "repair";  // doubles written: repair, chebyshev, nearest
