@@ -8,10 +8,11 @@
 //   bings-house-box[:S] the same house in a full box, its vertices numbered last (shellable;
 //                      greedy `index` order meets the house as a NOBUENOSS), S even, default 2
 //   compact-bings-house-box[:S] the same with a compact house (5 times fewer tets)
-//   dunce-hat-ball[:C] a 90-tet shellable ball meeting a dunce hat (topology::dunce_hat_ball, C collars),
-//                      combinatorial only: written as a facet list (.facets)
-//   knotted-hole[:S]   Furch's knotted hole, S cells per lattice unit (its cluster mesh erodes to a
-//   NOBUENOSS) fingers:F,W,L      a palm with F bent fingers of W x W cells and length L (thin parts)
+//   dunce-hat-ball[:C] a 90-tet shellable ball meeting a dunce hat (topology::dunce_hat_ball, C
+//                      collars), combinatorial only: written as a facet list (.facets)
+//   knotted-hole[:S]   Furch's knotted hole, S cells per lattice unit (its cluster mesh erodes to
+//                      a NOBUENOSS)
+//   fingers:F,W,L      a palm with F bent fingers of W x W cells and length L (thin parts)
 // --perturb SEED jitters every vertex by a dyadic offset of at most A (default 0.25) per axis,
 // keeping only offsets after which all its tets stay strictly positive (exact). OUT's extension
 // picks the format (io::write_tet_mesh): .ovm keeps the exact positions (as "str_exact_position";
@@ -195,16 +196,11 @@ int run(const std::vector<std::string>& args) {
     usage_error("dunce-hat-ball has no positions: write it as a .facets file");
   if (a.shape.kind == 'd' && a.seed) usage_error("--perturb needs positions, which dunce-hat-ball has not");
   check_writable({a.output});
-  if (a.shape.kind == 'd') {
-    std::vector<io::Tet> tets;
-    const topology::TetMesh mesh = topology::dunce_hat_ball(nullptr, a.shape.dims[0]);
-    for (auto t : mesh.live_tets()) tets.push_back(topology::indices_of(mesh.tet(t)));
-    io::write_facet_list(a.output, tets);
-    note("wrote " + a.output + ": " + std::to_string(mesh.num_vertices()) + " vertices, " +
-         std::to_string(tets.size()) + " tets");
-    return exit_ok;
-  }
-  generators::GeneratedDomain domain = generate(a);
+  generators::GeneratedDomain domain;
+  if (a.shape.kind == 'd')
+    domain.mesh = topology::dunce_hat_ball(nullptr, a.shape.dims[0]);  // no positions
+  else
+    domain = generate(a);
   io::TetMeshData data;
   data.positions = std::move(domain.positions);
   for (auto t : domain.mesh.live_tets()) data.tets.push_back(topology::indices_of(domain.mesh.tet(t)));
@@ -212,8 +208,8 @@ int run(const std::vector<std::string>& args) {
     io::write_facet_list(a.output, data.tets);
   else
     io::write_tet_mesh(a.output, data);
-  note("wrote " + a.output + ": " + std::to_string(data.positions.size()) + " vertices, " + std::to_string(data.tets.size()) +
-       " tets");
+  note("wrote " + a.output + ": " + std::to_string(domain.mesh.num_vertices()) + " vertices, " +
+       std::to_string(data.tets.size()) + " tets");
   return exit_ok;
 }
 

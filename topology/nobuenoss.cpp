@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -350,28 +351,29 @@ void stellar_subdivide(std::vector<Simplex>& tets, const Simplex& s, std::uint32
   tets = std::move(out);
 }
 
+// The faces of `s` with k vertices (sorted, as s is).
+std::vector<Simplex> faces_of(const Simplex& s, int k) {
+  std::vector<Simplex> out;
+  for (std::uint32_t mask = 0; mask < (1u << s.size()); ++mask) {
+    if (std::popcount(mask) != k) continue;
+    Simplex f;
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (mask >> i & 1) f.push_back(s[i]);
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
 // The k-faces of `tets` with every vertex in 1..8 that are not faces of the dunce hat, in order.
 std::vector<Simplex> foreign_faces(const std::vector<Simplex>& tets, int k) {
-  std::vector<Simplex> hat;
+  std::set<Simplex> hat;
   for (const auto& t : dunce_hat_triangles)
-    for (int skip = 0; skip < 3; ++skip) {
-      Simplex f;
-      for (int i = 0; i < 3; ++i)
-        if (k == 3 || i != skip) f.push_back(t[static_cast<std::size_t>(i)]);
-      hat.push_back(f);
-    }
-  std::vector<Simplex> out;
+    for (Simplex& f : faces_of({t.begin(), t.end()}, k)) hat.insert(std::move(f));
+  std::set<Simplex> out;
   for (const Simplex& t : tets)
-    for (std::uint32_t mask = 0; mask < 16; ++mask) {
-      if (std::popcount(mask) != k) continue;
-      Simplex f;
-      for (std::size_t i = 0; i < 4; ++i)
-        if (mask >> i & 1) f.push_back(t[i]);
-      if (f.back() <= 8 && std::find(hat.begin(), hat.end(), f) == hat.end()) out.push_back(f);
-    }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+    for (Simplex& f : faces_of(t, k))
+      if (f.back() <= 8 && !hat.count(f)) out.insert(std::move(f));
+  return {out.begin(), out.end()};
 }
 
 // The prisms between each boundary triangle and its copy, each cut into three tets by the
@@ -379,12 +381,7 @@ std::vector<Simplex> foreign_faces(const std::vector<Simplex>& tets, int k) {
 void add_collar(std::vector<Simplex>& tets, std::uint32_t& next) {
   std::map<Simplex, int> faces;
   for (const Simplex& t : tets)
-    for (std::size_t skip = 0; skip < 4; ++skip) {
-      Simplex f;
-      for (std::size_t i = 0; i < 4; ++i)
-        if (i != skip) f.push_back(t[i]);
-      ++faces[f];
-    }
+    for (const Simplex& f : faces_of(t, 3)) ++faces[f];
   std::map<std::uint32_t, std::uint32_t> copy;
   for (const auto& [f, n] : faces)
     if (n == 1)

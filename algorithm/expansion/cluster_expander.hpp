@@ -71,6 +71,7 @@ class ClusterExpander {
  private:
   // --- bookkeeping -------------------------------------------------------------------------
 
+  void count_cluster();    // cluster_ from the flags
   void classify_marked();  // evaluate() every vertex the queue has marked
   bool runaway();          // keeps the checkpoint; true when the cluster passed the runaway bound
   static ExpansionOutcome ran_away();  // the outcome that makes expand_cluster restart

@@ -35,8 +35,13 @@
 
 namespace cmx::algorithm::detail {
 
-ExpansionOutcome ClusterExpander::run() {
+void ClusterExpander::count_cluster() {
+  cluster_ = 0;
   for (VertexId v{0}; v < e_.num_vertices(); ++v) cluster_ += e_.unexpanded[v] ? 1 : 0;
+}
+
+ExpansionOutcome ClusterExpander::run() {
+  count_cluster();
   for (VertexId v{0}; v < e_.num_vertices(); ++v)
     if (e_.unexpanded[v]) queue_.mark(v);
   classify_marked();
@@ -98,7 +103,7 @@ ExpansionOutcome ClusterExpander::run() {
 }
 
 ExpansionOutcome ClusterExpander::replay() {
-  for (VertexId v{0}; v < e_.num_vertices(); ++v) cluster_ += e_.unexpanded[v] ? 1 : 0;
+  count_cluster();
   ExpansionOutcome planned = replay_shelling();
   report_progress(planned.outcome != MapOutcome::success || cluster_ == 0);
   return planned;

@@ -26,6 +26,11 @@ namespace {
 // of 22 and 48 instead of 46).
 constexpr std::size_t handover_check_fraction = 8;
 
+// After `asked` questions (or replayed expansions), how many before the next one.
+std::size_t next_handover_check(std::size_t asked) {
+  return asked + std::max<std::size_t>(1, asked / handover_check_fraction);
+}
+
 // Topological expansion of the cluster left completes in `order` and in it without its deferral.
 bool can_take_over(const topology::TetMesh& m, const topology::ExpansionOrder& order,
                    const std::vector<char>& unexpanded) {
@@ -141,7 +146,7 @@ std::optional<topology::ShellingExpansion> ClusterExpander::choose_replay_plan(s
     const topology::FixedBoundaryReplay sim = topology::replay_with_fixed_boundary(
         e_.mesh, plan, 0, [&](const topology::TetMesh& m, const std::vector<char>& unexpanded) {
           if (++asked < next) return false;
-          next = asked + std::max<std::size_t>(1, asked / handover_check_fraction);
+          next = next_handover_check(asked);
           return can_take_over(m, s_.order, unexpanded);
         });
     const std::size_t handover = sim.stopped ? sim.expansions : plan.steps.size() + 1;
@@ -199,8 +204,7 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
         stats_.replay.handed_over = true;
         break;
       }
-      next_check = stats_.replay.expansions +
-                   std::max<std::size_t>(1, stats_.replay.expansions / handover_check_fraction);
+      next_check = next_handover_check(stats_.replay.expansions);
     }
     const topology::ExpansionStep& st = plan.steps[i];
     if (st.kind != topology::ExpansionStepKind::plain_vertex) {

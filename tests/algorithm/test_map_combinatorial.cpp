@@ -45,6 +45,13 @@ alg::MapProblem combinatorial_problem(const std::vector<std::array<std::uint32_t
   return p;
 }
 
+// The tets of `mesh` as a facet list (the problem orients them again).
+std::vector<std::array<std::uint32_t, 4>> facets_of(const topo::TetMesh& mesh) {
+  std::vector<std::array<std::uint32_t, 4>> facets;
+  for (topo::TetId t : mesh.live_tets()) facets.push_back(topo::indices_of(mesh.tet(t)));
+  return facets;
+}
+
 alg::MapResult map_combinatorially(const alg::MapProblem& p) {
   alg::MapOptions o;
   o.combinatorial = true;
@@ -108,8 +115,7 @@ TEST_CASE("verify_subdivision: fails on a wrong parent record, a turned tet and 
 TEST_CASE("combinatorial maps of generated balls: their positions are ignored") {
   // A perturbed grid's tets with its geometry thrown away map like any facet list.
   const auto grid = cmx::generators::perturbed_grid(3, 2, 2, 1);
-  std::vector<std::array<std::uint32_t, 4>> facets;
-  for (topo::TetId t : grid.mesh.live_tets()) facets.push_back(topo::indices_of(grid.mesh.tet(t)));
+  const auto facets = facets_of(grid.mesh);
   const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::star);
   check_realisation(p, map_combinatorially(p));
 }
@@ -191,8 +197,7 @@ TEST_CASE(
   // is what the greedy loop is left with, its refinement included (on the house in a box the
   // refinement's pushes change the cluster mesh around the house and the run maps instead).
   const topo::TetMesh ball = topo::dunce_hat_ball();
-  std::vector<std::array<std::uint32_t, 4>> facets;
-  for (topo::TetId t : ball.live_tets()) facets.push_back(topo::indices_of(ball.tet(t)));
+  const auto facets = facets_of(ball);
   for (const auto shape : {cmx::generators::BoundaryShape::sphere, cmx::generators::BoundaryShape::tet,
                            cmx::generators::BoundaryShape::star}) {
     CAPTURE(int(shape));
@@ -243,8 +248,7 @@ TEST_CASE("the dunce-hat ball: a full replay of its shelling runs away and stops
   // leave more behind than they take: the replay stops once the mesh passes its bound
   // (tuning::replay_growth_per_step per step of the plan, plus tuning::replay_growth_floor).
   const topo::TetMesh ball = topo::dunce_hat_ball();
-  std::vector<std::array<std::uint32_t, 4>> facets;
-  for (topo::TetId t : ball.live_tets()) facets.push_back(topo::indices_of(ball.tet(t)));
+  const auto facets = facets_of(ball);
   const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::sphere);
   alg::MapOptions o;
   o.combinatorial = true;
@@ -269,8 +273,7 @@ TEST_CASE(
   // its greedy loop then stalled.
   std::size_t hat = 0;
   const topo::TetMesh ball = topo::dunce_hat_ball(&hat, 3);
-  std::vector<std::array<std::uint32_t, 4>> facets;
-  for (topo::TetId t : ball.live_tets()) facets.push_back(topo::indices_of(ball.tet(t)));
+  const auto facets = facets_of(ball);
   const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::sphere);
   alg::MapOptions o;
   o.combinatorial = true;
