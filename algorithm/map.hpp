@@ -210,6 +210,8 @@ struct MapStatistics {
     bool ran = false;
     bool after_nobuenoss = false;  // run again with the replay because the greedy loop met one
     bool handed_over = false;      // until_greedy: the greedy loop took over
+    // The replayed run's --shelled mode (after_nobuenoss raises when_stuck to after_pushes: map.cpp).
+    ShelledMode shelled = ShelledMode::when_stuck;
     // The input vertices the plan expanded, in its order (the other planned expansions are of
     // the vertices of its splits).
     std::vector<std::uint32_t> input_vertices;

@@ -374,6 +374,7 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
       detail::ClusterExpander x(e, s, stats);
       planned = x.replay();
     }
+    stats.replay.shelled = s.shelled;
     if (planned.outcome != MapOutcome::success || !stats.replay.handed_over) return planned;
     s.replay = ReplayMode::off;
     // A deferral is an experiment's way to meet a NOBUENOSS; the replay has led the cluster mesh

@@ -25,14 +25,14 @@ namespace {
 
 // The problem of mapping `facets` (oriented here) onto a generated shape, with no source geometry.
 alg::MapProblem combinatorial_problem(const std::vector<std::array<std::uint32_t, 4>>& facets,
-                                      cmx::generators::BoundaryShape shape) {
+                                      cmx::generators::BoundaryShape shape, std::uint64_t seed = 1234) {
   std::uint32_t n = 0;
   for (const auto& f : facets)
     for (auto v : f) n = std::max(n, v + 1);
   topo::TetMesh mesh(n, facets);
   REQUIRE(topo::orient_coherently(mesh).ok);
   REQUIRE(topo::check_ball(mesh).ok);
-  const auto g = cmx::generators::generate_boundary(mesh, {}, {shape, 1234, 0});
+  const auto g = cmx::generators::generate_boundary(mesh, {}, {shape, seed, 0});
   INFO(g.message);
   REQUIRE(g.ok);
   alg::MapProblem p;
@@ -71,6 +71,29 @@ void check_realisation(const alg::MapProblem& p, const alg::MapResult& r) {
   CHECK(alg::verify_subdivision(p.tets, p.source.size(), r.tets, r.parents, r.origin).empty());
   CHECK(r.target.size() > p.source.size());  // every vertex is on the boundary: splits were needed
   CHECK(r.stats.collapsed == 0);
+}
+
+// topo::dunce_hat_ball with `collars` mapped combinatorially with its hat (the last ids) deferred:
+// the greedy run meets the hat, a NOBUENOSS, and the run after it replays a shelling until greedy
+// expansion takes over, and maps (verified).
+alg::MapResult map_past_the_hat(std::uint32_t collars, cmx::generators::BoundaryShape shape,
+                                std::uint64_t seed, bool check) {
+  std::size_t hat = 0;
+  const topo::TetMesh ball = topo::dunce_hat_ball(&hat, collars);
+  const alg::MapProblem p = combinatorial_problem(facets_of(ball), shape, seed);
+  const std::size_t n = ball.num_vertices();
+  alg::MapOptions o;
+  o.combinatorial = true;
+  o.check = check;
+  o.order =
+      *topo::parse_expansion_order("priority,defer:" + std::to_string(n - hat) + "-" + std::to_string(n));
+  o.time_limit_seconds = 600;  // a bound for the test only
+  alg::MapResult r = alg::map_to_domain(p, o);
+  check_realisation(p, r);
+  CHECK(r.stats.nobuenoss);
+  CHECK(r.stats.replay.after_nobuenoss);
+  CHECK(r.stats.replay.handed_over);
+  return r;
 }
 
 }  // namespace
@@ -233,6 +256,7 @@ TEST_CASE(
     CHECK(rp.expansions >= rp.splits);
     CHECK(rp.expansions == rp.splits + rp.input_vertices.size());
     for (std::uint32_t v : rp.input_vertices) CHECK(v < 27);
+    CHECK(rp.shelled == alg::ShelledMode::after_pushes);  // raised from the default when-stuck
     // Asked for from the start, the replay maps without meeting the hat.
     o.replay = alg::ReplayMode::until_greedy;
     const alg::MapResult direct = alg::map_to_domain(p, o);
@@ -240,6 +264,7 @@ TEST_CASE(
     CHECK_FALSE(direct.stats.nobuenoss);
     CHECK(direct.stats.replay.handed_over);
     CHECK_FALSE(direct.stats.replay.after_nobuenoss);
+    CHECK(direct.stats.replay.shelled == alg::ShelledMode::when_stuck);  // as asked
   }
 }
 
@@ -271,20 +296,21 @@ TEST_CASE(
   // plans of several shellings the replay keeps the one whose topological replay gets there first
   // (tuning::replay_plan_seeds): 33 planned expansions, where the first seed's plan took 46 and
   // its greedy loop then stalled.
-  std::size_t hat = 0;
-  const topo::TetMesh ball = topo::dunce_hat_ball(&hat, 3);
-  const auto facets = facets_of(ball);
-  const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::sphere);
-  alg::MapOptions o;
-  o.combinatorial = true;
-  o.check = true;
-  o.order = *topo::parse_expansion_order("priority,defer:" + std::to_string(ball.num_vertices() - hat) + "-" +
-                                         std::to_string(ball.num_vertices()));
-  o.time_limit_seconds = 600;  // a bound for the test only
-  const alg::MapResult r = alg::map_to_domain(p, o);
-  check_realisation(p, r);
-  CHECK(r.stats.nobuenoss);
-  CHECK(r.stats.replay.after_nobuenoss);
-  CHECK(r.stats.replay.handed_over);
+  const alg::MapResult r = map_past_the_hat(3, cmx::generators::BoundaryShape::sphere, 1234, true);
   CHECK(r.stats.replay.shelling_attempts >= alg::tuning::replay_plan_seeds);  // every seed's plan compared
+}
+
+TEST_CASE(
+    "the dunce-hat ball with five collars: the run after the NOBUENOSS star-shapifies by shelling and maps") {
+  // Five collars between the boundary and the hat. With the fallback star-shapification kept for
+  // a last round, the greedy loop after the hand-over stalled here onto a sphere and onto star:3
+  // ("stalled: ... not a NOBUENOSS", after 8 restarts, 35 s each); the run after a NOBUENOSS, its
+  // replay included, now uses it wherever bends and pushes fail (--shelled after-pushes).
+  const std::pair<cmx::generators::BoundaryShape, std::uint64_t> shapes[] = {
+      {cmx::generators::BoundaryShape::sphere, 1234}, {cmx::generators::BoundaryShape::star, 3}};
+  for (const auto& [shape, seed] : shapes) {
+    CAPTURE(int(shape));
+    const alg::MapResult r = map_past_the_hat(5, shape, seed, false);
+    CHECK(r.stats.replay.shelled == alg::ShelledMode::after_pushes);
+  }
 }
