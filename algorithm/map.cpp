@@ -217,11 +217,6 @@ ExpansionOutcome replay_after_nobuenoss(const ValidatedProblem& v, const MapOpti
   phase = Clock::now();
   ExpansionSettings settings = expansion_settings(options, start, control, prescribed, s.input_vertices);
   settings.replay = ReplayMode::until_greedy;
-  // The replay and the loop after it star-shapify by shelling wherever bends and pushes fail, not
-  // only in a last round. Measured on the collared dunce-hat balls (docs/algorithm/expansion.md):
-  // otherwise the replay's refinement left states on which the loop stalled after the hand-over,
-  // and raising the mode for the loop alone did not help.
-  settings.shelled = std::max(options.shelled, ShelledMode::after_pushes);
   ExpansionOutcome out = expand_cluster(e, settings, s);
   s.seconds_expand = greedy.seconds_expand + seconds_since(phase);
   s.replay.after_nobuenoss = true;

@@ -210,13 +210,13 @@ struct MapStatistics {
     bool ran = false;
     bool after_nobuenoss = false;  // run again with the replay because the greedy loop met one
     bool handed_over = false;      // until_greedy: the greedy loop took over
-    // The replayed run's --shelled mode (after_nobuenoss raises when_stuck to after_pushes: map.cpp).
-    ShelledMode shelled = ShelledMode::when_stuck;
     // The input vertices the plan expanded, in its order (the other planned expansions are of
     // the vertices of its splits).
     std::vector<std::uint32_t> input_vertices;
     std::size_t chord_splits = 0;  // chords split before the shelling
     std::size_t shelling_attempts = 0;
+    std::size_t plans = 0;        // plans compared (one per shelling seed that found one)
+    std::size_t plans_tried = 0;  // replayed geometrically, the last one reported (best first)
     std::size_t steps = 0;       // of Alg. 2's plan
     std::size_t splits = 0;      // of all-cluster simplices, at p_c (the others change nothing)
     std::size_t expansions = 0;  // planned vertices expanded

@@ -48,6 +48,10 @@ inline constexpr std::size_t replay_growth_floor = 1024;
 // expansion take over soonest is replayed): on the dunce-hat ball with 4 collars, seeds 1 to 8
 // taken alone mapped 0, 1, 1, 0, 2, 1, 2, 0 of two shapes.
 inline constexpr std::size_t replay_plan_seeds = 8;
+// Plans replayed geometrically, best first, when the one before ran away (each from the state the
+// replay started in): on the dunce-hat ball with 3 or 8 collars the best plan ran away and each of
+// the next seven mapped.
+inline constexpr std::size_t replay_plan_attempts = 4;
 
 // Smoothing period (expansions) turned on for the attempts after a runaway restart, when the run
 // did not ask for smoothing itself: random orders on Freudenthal grids of 4,807 and 6,859

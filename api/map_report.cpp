@@ -79,8 +79,8 @@ JsonObject expansion_json(const algorithm::MapStatistics& s) {
     JsonObject rp;
     rp.flag("after_nobuenoss", s.replay.after_nobuenoss);
     rp.flag("handed_over", s.replay.handed_over).num("chord_splits", n(s.replay.chord_splits));
-    rp.str("shelled", std::string(algorithm::to_string(s.replay.shelled)));
     rp.num("shelling_attempts", n(s.replay.shelling_attempts)).num("steps", n(s.replay.steps));
+    rp.num("plans", n(s.replay.plans)).num("plans_tried", n(s.replay.plans_tried));
     rp.num("splits", n(s.replay.splits)).num("expansions", n(s.replay.expansions));
     rp.num("drained", n(s.replay.drained));
     std::string ids = "[";

@@ -144,20 +144,20 @@ void add_run_options(CLI::App& app, MapArgs& a) {
   add_parsed(app, "--shelled", a.options.shelled, shelled,
              "when to star-shapify by shelling the cone base onto its witness's\n"
              "star (default when-stuck: the fallback, once every candidate has failed\n"
-             "everything else); after-pushes: wherever bends and pushes failed (also\n"
-             "the run again after a NOBUENOSS, below); first: before bends and pushes")
+             "everything else); after-pushes: wherever bends and pushes failed;\n"
+             "first: before bends and pushes (these two are for tests and comparisons)")
       ->type_name("MODE");
   const auto replay =
       one_of_table("replay mode", algorithm::parse_replay_mode, "off, after-nobuenoss, until-greedy, full");
   add_parsed(app, "--replay-shelling", a.options.replay, replay,
              "replay a shelling of the input from the start (paper Sec. 4.3, Alg. 2):\n"
              "after-nobuenoss (default: when greedy expansion ends in a NOBUENOSS\n"
-             "and a shelling is found, the run again with until-greedy and at least\n"
-             "--shelled after-pushes); off (never);\n"
+             "and a shelling is found, the run again with until-greedy); off (never);\n"
              "until-greedy, from the start until topological expansion of the cluster\n"
              "left completes in the run's order and in it without its deferral, then\n"
              "the greedy loop in the latter (of 8 shellings, the one whose plan gets\n"
-             "there soonest); full, every step (of the first shelling found)")
+             "there soonest; the next, up to 4, when one runs away); full, every step\n"
+             "(of the first shelling found). Splits of the plan wait until it needs them")
       ->type_name("MODE");
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 // The expansion loop of paper Alg. 1 as one object (internal to algorithm/, used through
 // cluster_expansion.hpp). Alg. 1 itself, line by line: cluster_mesh_expansion.cpp (run, handle,
 // refine_and_expand); the queue, classification and bookkeeping: cluster_expansion.cpp; the local
@@ -63,7 +64,7 @@ class ClusterExpander {
   ExpansionOutcome run();
   // Paper Sec. 4.3: the replay of a shelling (MapOptions::replay), once, before run(); success
   // with the cluster left to the greedy loop when it handed over (shelling_replay.cpp).
-  ExpansionOutcome replay();
+  ExpansionOutcome replay(std::size_t plan_rank);
   bool refine_by(VertexId v, RefinementStep step);  // cluster_expansion.hpp
   // After run() returned a runaway: the state to go back to.
   std::optional<Checkpoint> take_checkpoint() { return std::move(checkpoint_); }
@@ -209,7 +210,7 @@ class ClusterExpander {
   // topology::ShellingOptions::interior) and converted by Alg. 2, and each step made: a split of
   // an all-cluster simplex at p_c, an expansion of the planned vertex with all the refinement,
   // then the refinement's own cluster vertices drained. `stats_.replay` counts.
-  ExpansionOutcome replay_shelling();
+  ExpansionOutcome replay_shelling(std::size_t plan_rank);
   void replay_split_chords();
   bool replay_expand(VertexId v);
   // The plan's vertices: every vertex below `first` (the mesh when the plan was made) and the
@@ -220,9 +221,23 @@ class ClusterExpander {
     std::unordered_set<VertexId> splits;
     bool contains(VertexId v) const { return v.idx() < first || splits.count(v) > 0; }
   };
+  // The replay's state: plan vertex -> vertex of the embedding (invalid: skipped; waiting_vertex:
+  // a split not made yet), the split steps waiting, the plan's vertices.
+  static constexpr VertexId waiting_vertex{0xfffffffeu};
+  struct ReplayState {
+    std::vector<VertexId> geo;
+    std::vector<std::size_t> waiting;
+    PlannedVertices planned;
+  };
+  std::optional<ExpansionOutcome> replay_split(const topology::ShellingExpansion& plan, std::size_t j,
+                                               ReplayState& r);
+  std::optional<ExpansionOutcome> replay_waiting_splits(const topology::ShellingExpansion& plan,
+                                                        ReplayState& r, const std::function<bool()>& met);
+  std::optional<ExpansionOutcome> replay_step(const topology::ShellingExpansion& plan, std::size_t j,
+                                              VertexId v, ReplayState& r);
   void replay_drain(const PlannedVertices& planned);
   bool greedy_can_take_over() const;
-  std::optional<topology::ShellingExpansion> choose_replay_plan(std::string& why);
+  std::optional<topology::ShellingExpansion> choose_replay_plan(std::size_t rank, std::string& why);
   ExpansionOutcome replay_failed(const std::string& why) const;
 
   Embedding& e_;

@@ -368,13 +368,24 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
   ExpansionSettings s = settings;
   if (s.order.kind == topology::ExpansionOrderKind::strict_index) s.planned_vertices = e.num_vertices();
   if (s.replay == ReplayMode::until_greedy || s.replay == ReplayMode::full) {
-    // The plan once; the greedy attempts and their restarts start where it handed over.
+    // The plan once; the greedy attempts and their restarts start where it handed over. A plan
+    // whose replay fails (runs away, or meets a step it cannot make) is replaced by the next best,
+    // from the same start.
     ExpansionOutcome planned;
-    {
-      detail::ClusterExpander x(e, s, stats);
-      planned = x.replay();
+    const Embedding before_replay = e;
+    const MapStatistics stats_before = stats;
+    for (std::size_t rank = 0;; ++rank) {
+      {
+        detail::ClusterExpander x(e, s, stats);
+        planned = x.replay(rank);
+      }
+      stats.replay.plans_tried = rank + 1;
+      if (planned.outcome != MapOutcome::stuck ||
+          rank + 1 >= std::min(tuning::replay_plan_attempts, stats.replay.plans))
+        break;
+      e = before_replay;
+      stats = stats_before;
     }
-    stats.replay.shelled = s.shelled;
     if (planned.outcome != MapOutcome::success || !stats.replay.handed_over) return planned;
     s.replay = ReplayMode::off;
     // A deferral is an experiment's way to meet a NOBUENOSS; the replay has led the cluster mesh

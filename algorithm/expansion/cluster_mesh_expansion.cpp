@@ -102,9 +102,9 @@ ExpansionOutcome ClusterExpander::run() {
   return {MapOutcome::success, {}};
 }
 
-ExpansionOutcome ClusterExpander::replay() {
+ExpansionOutcome ClusterExpander::replay(std::size_t plan_rank) {
   count_cluster();
-  ExpansionOutcome planned = replay_shelling();
+  ExpansionOutcome planned = replay_shelling(plan_rank);
   report_progress(planned.outcome != MapOutcome::success || cluster_ == 0);
   return planned;
 }

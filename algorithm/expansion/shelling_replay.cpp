@@ -2,6 +2,7 @@
 // expansion sequence and each of its steps is made with the loop's own refinement
 // (ClusterExpander::replay_shelling, docs/algorithm/expansion.md "Replaying a shelling").
 #include <algorithm>
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -114,17 +115,16 @@ bool ClusterExpander::greedy_can_take_over() const {
   return can_take_over(e_.mesh, s_.order, e_.unexpanded);
 }
 
-// The plan to replay: until_greedy compares the shellings of tuning::replay_plan_seeds seeds by
-// how many expansions their topological replay (topology::replay_with_fixed_boundary, asking as
-// the geometric replay does) takes before greedy expansion could take over, and keeps the one
-// that needs fewest (the first seed on a tie): each replayed step costs refinement, and on the
-// dunce-hat ball with more collars the seeds whose plans reach the hand-over sooner are the ones
-// whose geometric replay does not run away. full takes the first seed's plan.
-std::optional<topology::ShellingExpansion> ClusterExpander::choose_replay_plan(std::string& why) {
+// The plans to replay, best first: until_greedy compares the shellings of tuning::replay_plan_seeds
+// seeds by how many expansions their topological replay (topology::replay_with_fixed_boundary,
+// asking as the geometric replay does) takes before greedy expansion could take over, fewest
+// first (seed order on a tie): each replayed step costs refinement. full takes the first seed's
+// plan only. Returns the plan of rank `rank`, or nullopt (with `why`) when there is none.
+std::optional<topology::ShellingExpansion> ClusterExpander::choose_replay_plan(std::size_t rank,
+                                                                               std::string& why) {
   const std::vector<char> interior = e_.unexpanded;  // every interior vertex is in the cluster now
   const std::size_t seeds = s_.replay == ReplayMode::until_greedy ? tuning::replay_plan_seeds : 1;
-  std::optional<topology::ShellingExpansion> best;
-  std::size_t best_handover = 0;
+  std::vector<std::pair<std::size_t, topology::ShellingExpansion>> ranked;  // (hand-over, plan)
   for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
     if (seed > 1 && check_limits()) break;
     topology::ShellingOptions options;  // one seeded attempt series on this thread
@@ -141,7 +141,10 @@ std::optional<topology::ShellingExpansion> ClusterExpander::choose_replay_plan(s
       if (why.empty()) why = "could not convert the shelling: " + plan.message;
       continue;
     }
-    if (seeds == 1) return plan;
+    if (seeds == 1) {
+      ranked.emplace_back(0, std::move(plan));
+      break;
+    }
     std::size_t asked = 0, next = 0;
     const topology::FixedBoundaryReplay sim = topology::replay_with_fixed_boundary(
         e_.mesh, plan, 0, [&](const topology::TetMesh& m, const std::vector<char>& unexpanded) {
@@ -149,13 +152,13 @@ std::optional<topology::ShellingExpansion> ClusterExpander::choose_replay_plan(s
           next = next_handover_check(asked);
           return can_take_over(m, s_.order, unexpanded);
         });
-    const std::size_t handover = sim.stopped ? sim.expansions : plan.steps.size() + 1;
-    if (!best || handover < best_handover) {
-      best = std::move(plan);
-      best_handover = handover;
-    }
+    ranked.emplace_back(sim.stopped ? sim.expansions : plan.steps.size() + 1, std::move(plan));
   }
-  return best;
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  stats_.replay.plans = ranked.size();
+  if (rank >= ranked.size()) return std::nullopt;
+  return std::move(ranked[rank].second);
 }
 
 ExpansionOutcome ClusterExpander::replay_failed(const std::string& why) const {
@@ -170,35 +173,98 @@ ExpansionOutcome ClusterExpander::replay_failed(const std::string& why) const {
 // (the full subcomplex of the cluster vertices) exactly as it was, since every simplex of it
 // either contains the new vertex or existed before. The same holds for boundary and free splits,
 // which make an expanded vertex at once. And the refinement only ever splits edges with an
-// expanded end, so the all-cluster simplices of the plan are never refined away: the cluster
-// mesh of the replay is the plan's (topology/fixed_boundary_replay.hpp) at every step, once the
-// refinement's own vertices are drained, and so every planned vertex satisfies Eq. (1) at its turn.
-ExpansionOutcome ClusterExpander::replay_shelling() {
+// expanded end, so the all-cluster simplices of the plan are never refined away.
+//
+// Splits are made lazily: a split step waits until the plan needs it, that is until a planned
+// vertex fails Eq. (1) without it, or a later split refers to its vertex; then the waiting splits
+// are made in plan order, each expanding its new vertex, only until that need is met. Why: the
+// vertex of a split of an all-cluster edge has an empty cone (both ends sit at p_c) and needs
+// inflation, whose vertices must be drained in turn. Made eagerly, in plan order, those splits
+// ran away on the dunce-hat ball with 6 or more collars; lazily, about half of them are never
+// needed (docs/algorithm/expansion.md, "Replaying a shelling"). Every expansion still checks
+// Eq. (1) at its turn, and the hand-over still asks for topological completion.
+std::optional<ExpansionOutcome> ClusterExpander::replay_split(const topology::ShellingExpansion& plan,
+                                                              std::size_t j, ReplayState& r) {
+  const topology::ExpansionStep& st = plan.steps[j];
+  const int n = st.kind == topology::ExpansionStepKind::edge_split ? 2 : 3;
+  VertexId s[3];
+  bool all_cluster = true;
+  for (int a = 0; a < n; ++a) {
+    s[a] = r.geo[st.split[a].idx()];
+    all_cluster =
+        all_cluster && s[a] != topology::invalid_vertex && s[a] != waiting_vertex && e_.unexpanded[s[a]];
+  }
+  if (!all_cluster) {
+    r.geo[st.vertex.idx()] = topology::invalid_vertex;
+    return std::nullopt;
+  }
+  if (!simplex_exists(e_.mesh, s, n))
+    return replay_failed("lost a simplex of its plan at step " + std::to_string(j));
+  const VertexId v =
+      n == 2 ? e_.split_edge(s[0], s[1], e_.center, true) : e_.split_face(s[0], s[1], s[2], e_.center, true);
+  ++cluster_;
+  ++stats_.replay.splits;
+  require_valid(v, "replayed split", nullptr);
+  r.geo[st.vertex.idx()] = v;
+  r.planned.splits.insert(v);
+  return replay_step(plan, j, v, r);
+}
+
+// Makes the waiting splits in plan order until `met` holds (before each one).
+std::optional<ExpansionOutcome> ClusterExpander::replay_waiting_splits(
+    const topology::ShellingExpansion& plan, ReplayState& r, const std::function<bool()>& met) {
+  std::size_t k = 0;
+  for (; k < r.waiting.size() && !met(); ++k)
+    if (auto failed = replay_split(plan, r.waiting[k], r)) return failed;
+  r.waiting.erase(r.waiting.begin(), r.waiting.begin() + static_cast<std::ptrdiff_t>(k));
+  return std::nullopt;
+}
+
+// Expands planned vertex v (step j) with all the refinement, then drains.
+std::optional<ExpansionOutcome> ClusterExpander::replay_step(const topology::ShellingExpansion& plan,
+                                                             std::size_t j, VertexId v, ReplayState& r) {
+  if (!replay_expand(v))
+    return replay_failed("could not expand vertex " + std::to_string(v) + " at step " + std::to_string(j) +
+                         " of " + std::to_string(plan.steps.size()));
+  ++stats_.replay.expansions;
+  if (v.idx() < s_.input_vertices) stats_.replay.input_vertices.push_back(v.idx());
+  replay_drain(r.planned);
+  report_progress(false);
+  return std::nullopt;
+}
+
+ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank) {
   stats_.replay = {};
   stats_.replay.ran = true;
   replay_split_chords();
   std::string why;
-  const std::optional<topology::ShellingExpansion> chosen = choose_replay_plan(why);
-  if (!chosen) return replay_failed(why);
+  const std::optional<topology::ShellingExpansion> chosen = choose_replay_plan(plan_rank, why);
+  if (!chosen)
+    return replay_failed(why.empty() ? "has no plan of rank " + std::to_string(plan_rank + 1) : why);
   const topology::ShellingExpansion& plan = *chosen;
   stats_.replay.steps = plan.steps.size();
   aggressive_ = shelling_round_ = true;  // every refinement the loop has, at once
-  std::vector<VertexId> geo;             // plan vertex -> vertex of the embedding (invalid: skipped)
-  for (std::size_t i = 0; i < e_.num_vertices(); ++i) geo.push_back(VertexId(static_cast<std::uint32_t>(i)));
-  PlannedVertices planned{
-      static_cast<std::uint32_t>(e_.num_vertices()),
-      e_.num_vertices() + tuning::replay_growth_per_step * plan.steps.size() + tuning::replay_growth_floor,
-      {}};
+  ReplayState r{
+      {},
+      {},
+      {static_cast<std::uint32_t>(e_.num_vertices()),
+       e_.num_vertices() + tuning::replay_growth_per_step * plan.steps.size() + tuning::replay_growth_floor,
+       {}}};
+  for (std::size_t i = 0; i < e_.num_vertices(); ++i)
+    r.geo.push_back(VertexId(static_cast<std::uint32_t>(i)));
   const auto ran_away = [&] {
-    return replay_failed("ran away: its refinement grew the mesh to " + std::to_string(e_.num_vertices()) +
-                         " vertices, beyond " + std::to_string(planned.vertex_bound) + " (" +
-                         std::to_string(tuning::replay_growth_per_step) + " per step of its plan and " +
-                         std::to_string(tuning::replay_growth_floor) + ")");
+    ExpansionOutcome out =
+        replay_failed("ran away: its refinement grew the mesh to " + std::to_string(e_.num_vertices()) +
+                      " vertices, beyond " + std::to_string(r.planned.vertex_bound) + " (" +
+                      std::to_string(tuning::replay_growth_per_step) + " per step of its plan and " +
+                      std::to_string(tuning::replay_growth_floor) + ")");
+    out.runaway = true;
+    return out;
   };
   std::size_t next_check = 0;  // replayed expansions before the next handover check
   for (std::size_t i = 0; i < plan.steps.size() && cluster_ > 0; ++i) {
     if (auto stop = check_limits()) return *stop;
-    if (e_.num_vertices() > planned.vertex_bound) return ran_away();
+    if (e_.num_vertices() > r.planned.vertex_bound) return ran_away();
     if (s_.replay == ReplayMode::until_greedy && stats_.replay.expansions >= next_check) {
       if (greedy_can_take_over()) {
         stats_.replay.handed_over = true;
@@ -208,43 +274,35 @@ ExpansionOutcome ClusterExpander::replay_shelling() {
     }
     const topology::ExpansionStep& st = plan.steps[i];
     if (st.kind != topology::ExpansionStepKind::plain_vertex) {
-      if (st.vertex.idx() != geo.size())
+      if (st.vertex.idx() != r.geo.size())
         throw MapError(MapErrorKind::internal, "replay: plan numbering out of step");
       const int n = st.kind == topology::ExpansionStepKind::edge_split ? 2 : 3;
-      VertexId s[3];
-      bool all_cluster = true;
-      for (int a = 0; a < n; ++a) {
-        s[a] = geo[st.split[a].idx()];
-        all_cluster = all_cluster && s[a] != topology::invalid_vertex && e_.unexpanded[s[a]];
-      }
-      if (!all_cluster) {
-        geo.push_back(topology::invalid_vertex);
-        continue;
-      }
-      if (!simplex_exists(e_.mesh, s, n))
-        return replay_failed("lost a simplex of its plan at step " + std::to_string(i));
-      const VertexId v = n == 2 ? e_.split_edge(s[0], s[1], e_.center, true)
-                                : e_.split_face(s[0], s[1], s[2], e_.center, true);
-      ++cluster_;
-      ++stats_.replay.splits;
-      require_valid(v, "replayed split", nullptr);
-      geo.push_back(v);
-      planned.splits.insert(v);
+      const auto refers_to_waiting = [&] {
+        for (int a = 0; a < n; ++a)
+          if (r.geo[st.split[a].idx()] == waiting_vertex) return true;
+        return false;
+      };
+      if (auto failed = replay_waiting_splits(plan, r, [&] { return !refers_to_waiting(); })) return *failed;
+      r.geo.push_back(waiting_vertex);
+      r.waiting.push_back(i);
+      continue;
     }
-    const VertexId v = geo[st.vertex.idx()];
-    if (v == topology::invalid_vertex || !e_.unexpanded[v]) continue;
-    if (!replay_expand(v))
-      return replay_failed("could not expand vertex " + std::to_string(v) + " at step " + std::to_string(i) +
-                           " of " + std::to_string(plan.steps.size()));
-    ++stats_.replay.expansions;
-    if (v.idx() < s_.input_vertices) stats_.replay.input_vertices.push_back(v.idx());
-    replay_drain(planned);
-    report_progress(false);
+    const auto ready = [&] {
+      const VertexId v = r.geo[st.vertex.idx()];
+      return v != waiting_vertex &&
+             (v == topology::invalid_vertex || !e_.unexpanded[v] ||
+              topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_).expandable);
+    };
+    if (auto failed = replay_waiting_splits(plan, r, ready)) return *failed;
+    const VertexId v = r.geo[st.vertex.idx()];
+    if (v == topology::invalid_vertex || v == waiting_vertex || !e_.unexpanded[v]) continue;
+    if (auto failed = replay_step(plan, i, v, r)) return *failed;
   }
   if (stats_.replay.handed_over) return {MapOutcome::success, {}};
-  replay_drain(planned);
+  if (auto failed = replay_waiting_splits(plan, r, [] { return false; })) return *failed;
+  replay_drain(r.planned);
   if (auto stop = check_limits()) return *stop;
-  if (e_.num_vertices() > planned.vertex_bound) return ran_away();
+  if (e_.num_vertices() > r.planned.vertex_bound) return ran_away();
   if (cluster_ > 0) return replay_failed("ended with cluster vertices left");
   report_progress(true);
   return {MapOutcome::success, {}};

@@ -21,8 +21,11 @@ TEST_CASE("replaying a shelling maps a grid step by step, keeping every invarian
     CHECK(r.stats.replay.ran);
     CHECK_FALSE(r.stats.replay.handed_over);
     CHECK(r.stats.replay.steps > 0);
-    CHECK(r.stats.replay.splits > 0);  // all-cluster edges and faces split at p_c
-    CHECK(r.stats.replay.expansions > r.stats.replay.splits);
+    // Splits wait until the plan needs them: on a grid every planned vertex satisfies Eq. (1)
+    // without its plan's splits of all-cluster edges and faces (the dunce-hat ball needs some:
+    // test_map_combinatorial.cpp).
+    CHECK(r.stats.replay.splits == 0);
+    CHECK(r.stats.replay.expansions > 0);
   }
 }
 
