@@ -162,13 +162,21 @@ bool ClusterExpander::refine_and_expand(VertexId v, int depth) {
   if (!st.expandable) return false;
   if (try_simple(v, st.manifold_k)) return true;
   if (depth == 0 && relax_base(v) && try_simple(v, st.manifold_k)) return true;
+  // Inflation changes v's unexpanded link (the split vertices it expands were cluster vertices
+  // around v): the steps after it need Eq. (1) again, or v's expansion could leave the cluster
+  // mesh not simply connected (found with --check on a replay, docs/algorithm/expansion.md).
+  const auto still_eq1 = [&] {
+    return topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_).expandable;
+  };
   ConeBase base = cone_base(e_, v);
   if (base.adj.empty() && !base.verts.empty()) {  // line 9, a base without edges
     if (inflate_isolated(v, base, depth) && !e_.unexpanded[v]) return true;
+    if (!still_eq1()) return false;
     base = cone_base(e_, v);  // the attempts' refinement may have kept edits
   }
   if (has_dangling_edge(base)) {  // line 9
     if (!inflate(v, depth) || !e_.unexpanded[v]) return !e_.unexpanded[v];
+    if (!still_eq1()) return false;
     if (try_simple(v, st.manifold_k)) return true;
   }
   if (s_.shelled == ShelledMode::first && shelled_star_shapify(v, st.manifold_k, depth)) return true;
@@ -178,7 +186,8 @@ bool ClusterExpander::refine_and_expand(VertexId v, int depth) {
   if (!aggressive_ || depth > 0) return false;
   if (star_shapify(v, st.manifold_k, depth, true)) return true;
   // Line 9 as the paper does it (Sec. 4.2.1: split around the base's cut vertices).
-  if (paper_inflate(v, depth) && (!e_.unexpanded[v] || try_simple(v, st.manifold_k))) return true;
+  if (paper_inflate(v, depth) && (!e_.unexpanded[v] || (still_eq1() && try_simple(v, st.manifold_k))))
+    return true;
   if (!e_.unexpanded[v]) return true;
   return shelling_round_ && fallback(v, st.manifold_k, depth);
 }

@@ -77,7 +77,8 @@ void check_realisation(const alg::MapProblem& p, const alg::MapResult& r) {
 // the greedy run meets the hat, a NOBUENOSS, and the run after it replays a shelling until greedy
 // expansion takes over, and maps (verified).
 alg::MapResult map_past_the_hat(std::uint32_t collars, cmx::generators::BoundaryShape shape,
-                                std::uint64_t seed, bool check) {
+                                std::uint64_t seed, bool check,
+                                alg::ShelledMode shelled = alg::ShelledMode::when_stuck) {
   std::size_t hat = 0;
   const topo::TetMesh ball = topo::dunce_hat_ball(&hat, collars);
   const alg::MapProblem p = combinatorial_problem(facets_of(ball), shape, seed);
@@ -85,6 +86,7 @@ alg::MapResult map_past_the_hat(std::uint32_t collars, cmx::generators::Boundary
   alg::MapOptions o;
   o.combinatorial = true;
   o.check = check;
+  o.shelled = shelled;
   o.order =
       *topo::parse_expansion_order("priority,defer:" + std::to_string(n - hat) + "-" + std::to_string(n));
   o.time_limit_seconds = 600;  // a bound for the test only
@@ -309,4 +311,15 @@ TEST_CASE(
   CHECK(r.stats.replay.plans_tried == 2);
   CHECK(r.stats.replay.splits > 0);
   CHECK(r.stats.replay.splits < r.stats.replay.expansions);
+}
+
+TEST_CASE(
+    "a refined vertex is expanded only while it satisfies Eq. (1), whatever the refinement did to its link") {
+  // Three collars onto a sphere, with the shelling star-shapification wherever bends and pushes
+  // fail: here an inflation changed a planned vertex's unexpanded link so that it no longer
+  // satisfied Eq. (1), and the steps after it expanded the vertex anyway, which left the cluster
+  // mesh not simply connected (b0 = 1, chi = 0). --check asserts every invariant after every step.
+  const alg::MapResult r =
+      map_past_the_hat(3, cmx::generators::BoundaryShape::sphere, 1234, true, alg::ShelledMode::after_pushes);
+  CHECK(r.stats.replay.handed_over);
 }
