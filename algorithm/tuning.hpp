@@ -39,18 +39,19 @@ inline constexpr std::size_t vertex_budget_per_input_vertex = 50;
 
 // The replay of a shelling (expansion/shelling_replay.cpp) stops as run away once the mesh has
 // grown by more than per_step x the plan's steps + floor vertices: its drain can add cluster
-// vertices faster than it expands them (6x6x6 grids, the house in a box), and after a NOBUENOSS
-// it runs on its own, possibly without a time limit. Replays that complete stay far below (the
-// dunce-hat ball: under 200 vertices for a bound of 2,539; 5x5x5 grids: a few hundred).
+// vertices faster than it expands them (a full replay of the dunce-hat ball; with the plan's
+// splits made in plan order, 6x6x6 grids and the ball with 6 or more collars), and after a
+// NOBUENOSS it runs on its own, possibly without a time limit. Replays that complete stay far
+// below (the dunce-hat ball with 32 collars: at most 619 output vertices for a bound of about 14,600).
 inline constexpr std::size_t replay_growth_per_step = 16;
 inline constexpr std::size_t replay_growth_floor = 1024;
 // Shelling seeds whose plans until_greedy compares topologically (the one that lets greedy
 // expansion take over soonest is replayed): on the dunce-hat ball with 4 collars, seeds 1 to 8
 // taken alone mapped 0, 1, 1, 0, 2, 1, 2, 0 of two shapes.
 inline constexpr std::size_t replay_plan_seeds = 8;
-// Plans replayed geometrically, best first, when the one before ran away (each from the state the
-// replay started in): on the dunce-hat ball with 3 or 8 collars the best plan ran away and each of
-// the next seven mapped.
+// Plans replayed geometrically, best first, when the one before failed (each from the state the
+// replay started in): with the plan's splits made only when needed, the best plan of the
+// dunce-hat ball with 32 collars meets a split vertex it cannot expand and the second maps.
 inline constexpr std::size_t replay_plan_attempts = 4;
 
 // Smoothing period (expansions) turned on for the attempts after a runaway restart, when the run

@@ -1,5 +1,4 @@
 #pragma once
-#include <functional>
 // The expansion loop of paper Alg. 1 as one object (internal to algorithm/, used through
 // cluster_expansion.hpp). Alg. 1 itself, line by line: cluster_mesh_expansion.cpp (run, handle,
 // refine_and_expand); the queue, classification and bookkeeping: cluster_expansion.cpp; the local
@@ -8,6 +7,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -23,6 +23,15 @@
 #include "topology/shelling.hpp"
 
 namespace cmx::algorithm::detail {
+
+// The plans a replay can take, best first (ClusterExpander::rank_replay_plans), found once and
+// kept across the attempts of expand_cluster: each attempt starts from the same state.
+struct ReplayPlans {
+  bool ranked = false;
+  std::vector<topology::ShellingExpansion> best_first;
+  std::size_t shelling_attempts = 0;
+  std::string why;  // why there is none, when there is none
+};
 
 // Depth of local refinement: a star-shapification or inflation expands the vertices it pushes
 // right away, refining them in turn up to this depth; deeper, they go back to the queue.
@@ -64,7 +73,7 @@ class ClusterExpander {
   ExpansionOutcome run();
   // Paper Sec. 4.3: the replay of a shelling (MapOptions::replay), once, before run(); success
   // with the cluster left to the greedy loop when it handed over (shelling_replay.cpp).
-  ExpansionOutcome replay(std::size_t plan_rank);
+  ExpansionOutcome replay(std::size_t plan_rank, ReplayPlans& plans);
   bool refine_by(VertexId v, RefinementStep step);  // cluster_expansion.hpp
   // After run() returned a runaway: the state to go back to.
   std::optional<Checkpoint> take_checkpoint() { return std::move(checkpoint_); }
@@ -210,7 +219,7 @@ class ClusterExpander {
   // topology::ShellingOptions::interior) and converted by Alg. 2, and each step made: a split of
   // an all-cluster simplex at p_c, an expansion of the planned vertex with all the refinement,
   // then the refinement's own cluster vertices drained. `stats_.replay` counts.
-  ExpansionOutcome replay_shelling(std::size_t plan_rank);
+  ExpansionOutcome replay_shelling(std::size_t plan_rank, ReplayPlans& plans);
   void replay_split_chords();
   bool replay_expand(VertexId v);
   // The plan's vertices: every vertex below `first` (the mesh when the plan was made) and the
@@ -237,7 +246,7 @@ class ClusterExpander {
                                               VertexId v, ReplayState& r);
   void replay_drain(const PlannedVertices& planned);
   bool greedy_can_take_over() const;
-  std::optional<topology::ShellingExpansion> choose_replay_plan(std::size_t rank, std::string& why);
+  void rank_replay_plans(ReplayPlans& plans);
   ExpansionOutcome replay_failed(const std::string& why) const;
 
   Embedding& e_;

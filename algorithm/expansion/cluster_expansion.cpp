@@ -372,12 +372,13 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
     // whose replay fails (runs away, or meets a step it cannot make) is replaced by the next best,
     // from the same start.
     ExpansionOutcome planned;
+    detail::ReplayPlans plans;
     const Embedding before_replay = e;
     const MapStatistics stats_before = stats;
     for (std::size_t rank = 0;; ++rank) {
       {
         detail::ClusterExpander x(e, s, stats);
-        planned = x.replay(rank);
+        planned = x.replay(rank, plans);
       }
       stats.replay.plans_tried = rank + 1;
       if (planned.outcome != MapOutcome::stuck ||

@@ -102,9 +102,9 @@ ExpansionOutcome ClusterExpander::run() {
   return {MapOutcome::success, {}};
 }
 
-ExpansionOutcome ClusterExpander::replay(std::size_t plan_rank) {
+ExpansionOutcome ClusterExpander::replay(std::size_t plan_rank, ReplayPlans& plans) {
   count_cluster();
-  ExpansionOutcome planned = replay_shelling(plan_rank);
+  ExpansionOutcome planned = replay_shelling(plan_rank, plans);
   report_progress(planned.outcome != MapOutcome::success || cluster_ == 0);
   return planned;
 }
@@ -194,7 +194,7 @@ bool ClusterExpander::refine_and_expand(VertexId v, int depth) {
 
 // A step at the last depth, so that what it pushes is left in the cluster.
 bool ClusterExpander::refine_by(VertexId v, RefinementStep step) {
-  for (VertexId u{0}; u < e_.num_vertices(); ++u) cluster_ += e_.unexpanded[u] ? 1 : 0;
+  count_cluster();
   const topology::ClusterVertexStatus st = topology::classify_cluster_vertex(e_.mesh, v, e_.unexpanded, ws_);
   if (!e_.unexpanded[v] || !st.expandable) return false;
   switch (step) {

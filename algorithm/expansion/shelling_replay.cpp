@@ -119,9 +119,9 @@ bool ClusterExpander::greedy_can_take_over() const {
 // seeds by how many expansions their topological replay (topology::replay_with_fixed_boundary,
 // asking as the geometric replay does) takes before greedy expansion could take over, fewest
 // first (seed order on a tie): each replayed step costs refinement. full takes the first seed's
-// plan only. Returns the plan of rank `rank`, or nullopt (with `why`) when there is none.
-std::optional<topology::ShellingExpansion> ClusterExpander::choose_replay_plan(std::size_t rank,
-                                                                               std::string& why) {
+// plan only.
+void ClusterExpander::rank_replay_plans(ReplayPlans& plans) {
+  plans.ranked = true;
   const std::vector<char> interior = e_.unexpanded;  // every interior vertex is in the cluster now
   const std::size_t seeds = s_.replay == ReplayMode::until_greedy ? tuning::replay_plan_seeds : 1;
   std::vector<std::pair<std::size_t, topology::ShellingExpansion>> ranked;  // (hand-over, plan)
@@ -131,14 +131,14 @@ std::optional<topology::ShellingExpansion> ClusterExpander::choose_replay_plan(s
     options.interior = &interior;
     options.seed = seed;
     const topology::ShellingResult shelling = topology::find_shelling(e_.mesh, options);
-    stats_.replay.shelling_attempts += shelling.attempts;
+    plans.shelling_attempts += shelling.attempts;
     if (!shelling.found) {
-      if (why.empty()) why = "found no shelling: " + shelling.message;
+      if (plans.why.empty()) plans.why = "found no shelling: " + shelling.message;
       continue;
     }
     topology::ShellingExpansion plan = topology::shelling_to_expansion_sequence(e_.mesh, shelling.order);
     if (!plan.ok) {
-      if (why.empty()) why = "could not convert the shelling: " + plan.message;
+      if (plans.why.empty()) plans.why = "could not convert the shelling: " + plan.message;
       continue;
     }
     if (seeds == 1) {
@@ -156,9 +156,7 @@ std::optional<topology::ShellingExpansion> ClusterExpander::choose_replay_plan(s
   }
   std::stable_sort(ranked.begin(), ranked.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
-  stats_.replay.plans = ranked.size();
-  if (rank >= ranked.size()) return std::nullopt;
-  return std::move(ranked[rank].second);
+  for (auto& [handover, plan] : ranked) plans.best_first.push_back(std::move(plan));
 }
 
 ExpansionOutcome ClusterExpander::replay_failed(const std::string& why) const {
@@ -233,15 +231,17 @@ std::optional<ExpansionOutcome> ClusterExpander::replay_step(const topology::She
   return std::nullopt;
 }
 
-ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank) {
+ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank, ReplayPlans& plans) {
   stats_.replay = {};
   stats_.replay.ran = true;
   replay_split_chords();
-  std::string why;
-  const std::optional<topology::ShellingExpansion> chosen = choose_replay_plan(plan_rank, why);
-  if (!chosen)
-    return replay_failed(why.empty() ? "has no plan of rank " + std::to_string(plan_rank + 1) : why);
-  const topology::ShellingExpansion& plan = *chosen;
+  if (!plans.ranked) rank_replay_plans(plans);
+  stats_.replay.shelling_attempts = plans.shelling_attempts;
+  stats_.replay.plans = plans.best_first.size();
+  if (plan_rank >= plans.best_first.size())
+    return replay_failed(plans.why.empty() ? "has no plan of rank " + std::to_string(plan_rank + 1)
+                                           : plans.why);
+  const topology::ShellingExpansion& plan = plans.best_first[plan_rank];
   stats_.replay.steps = plan.steps.size();
   aggressive_ = shelling_round_ = true;  // every refinement the loop has, at once
   ReplayState r{

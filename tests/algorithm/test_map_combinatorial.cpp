@@ -52,6 +52,14 @@ std::vector<std::array<std::uint32_t, 4>> facets_of(const topo::TetMesh& mesh) {
   return facets;
 }
 
+// Options of a combinatorial run, with a time limit so that a runaway in a test ends.
+alg::MapOptions combinatorial_options() {
+  alg::MapOptions o;
+  o.combinatorial = true;
+  o.time_limit_seconds = 600;  // a bound for the test only
+  return o;
+}
+
 alg::MapResult map_combinatorially(const alg::MapProblem& p) {
   alg::MapOptions o;
   o.combinatorial = true;
@@ -83,13 +91,11 @@ alg::MapResult map_past_the_hat(std::uint32_t collars, cmx::generators::Boundary
   const topo::TetMesh ball = topo::dunce_hat_ball(&hat, collars);
   const alg::MapProblem p = combinatorial_problem(facets_of(ball), shape, seed);
   const std::size_t n = ball.num_vertices();
-  alg::MapOptions o;
-  o.combinatorial = true;
+  alg::MapOptions o = combinatorial_options();
   o.check = check;
   o.shelled = shelled;
   o.order =
       *topo::parse_expansion_order("priority,defer:" + std::to_string(n - hat) + "-" + std::to_string(n));
-  o.time_limit_seconds = 600;  // a bound for the test only
   alg::MapResult r = alg::map_to_domain(p, o);
   check_realisation(p, r);
   CHECK(r.stats.nobuenoss);
@@ -150,9 +156,7 @@ TEST_CASE("Rudin's ball is realised on a sphere after a runaway restart") {
   // away (the cluster grows without end) in the default order, and the restart from the start
   // with random tie-breaks finishes (expansion/cluster_expansion.hpp, "Runaway restarts").
   const alg::MapProblem p = combinatorial_problem(cmx::test::rudin_ball(), cmx::generators::BoundaryShape::sphere);
-  alg::MapOptions o;
-  o.combinatorial = true;
-  o.time_limit_seconds = 600;  // a bound for the test only: a runaway would otherwise not end
+  alg::MapOptions o = combinatorial_options();
   const alg::MapResult r = alg::map_to_domain(p, o);
   CAPTURE(r.stats.expansion_restarts);
   check_realisation(p, r);
@@ -172,11 +176,9 @@ TEST_CASE("Rudin's and Ziegler's balls: where bends and pushes fail, the shellin
   std::size_t shelled = 0;
   for (const auto& [facets, shape] : cases) {
     const alg::MapProblem p = combinatorial_problem(*facets, shape);
-    alg::MapOptions o;
-    o.combinatorial = true;
+    alg::MapOptions o = combinatorial_options();
     o.check = true;
     o.shelled = alg::ShelledMode::after_pushes;
-    o.time_limit_seconds = 600;  // a bound for the test only
     const alg::MapResult r = alg::map_to_domain(p, o);
     check_realisation(p, r);
     shelled += r.stats.shelled_star_shapifications;
@@ -188,9 +190,7 @@ TEST_CASE("after a runaway restart the loop smooths, and Rudin's ball maps onto 
   // Without smoothing after its restarts this run stalled ("stalled: 46 cluster vertices left
   // (after 8 restarts)") with every binary before it; the run itself asks for no smoothing.
   const alg::MapProblem p = combinatorial_problem(cmx::test::rudin_ball(), cmx::generators::BoundaryShape::stiff_tet);
-  alg::MapOptions o;
-  o.combinatorial = true;
-  o.time_limit_seconds = 600;  // a bound for the test only
+  alg::MapOptions o = combinatorial_options();
   REQUIRE(o.smooth_every == 0);
   const alg::MapResult r = alg::map_to_domain(p, o);
   check_realisation(p, r);
@@ -203,10 +203,8 @@ TEST_CASE("a run that stalls where the topology allows progress says it is not a
   // stalls after its restarts; topological expansion from the cluster mesh left completes, so
   // the message says the refinement failed, and the report does not claim a NOBUENOSS.
   const alg::MapProblem p = combinatorial_problem(cmx::test::rudin_ball(), cmx::generators::BoundaryShape::star);
-  alg::MapOptions o;
-  o.combinatorial = true;
+  alg::MapOptions o = combinatorial_options();
   o.shelled = alg::ShelledMode::first;
-  o.time_limit_seconds = 600;  // a bound for the test only
   const alg::MapResult r = alg::map_to_domain(p, o);
   INFO(r.message);
   REQUIRE(r.outcome == alg::MapOutcome::stuck);
@@ -227,11 +225,9 @@ TEST_CASE(
                            cmx::generators::BoundaryShape::star}) {
     CAPTURE(int(shape));
     const alg::MapProblem p = combinatorial_problem(facets, shape);
-    alg::MapOptions o;
-    o.combinatorial = true;
+    alg::MapOptions o = combinatorial_options();
     o.check = true;  // every invariant after every step, the replay's included
     o.order = *topo::parse_expansion_order("priority,defer:19-27");
-    o.time_limit_seconds = 600;  // a bound for the test only
     // Told not to replay: stuck on the hat, with the shelling verdict.
     o.replay = alg::ReplayMode::off;
     const alg::MapResult stuck = alg::map_to_domain(p, o);
@@ -274,10 +270,8 @@ TEST_CASE("the dunce-hat ball: a full replay of its shelling runs away and stops
   const topo::TetMesh ball = topo::dunce_hat_ball();
   const auto facets = facets_of(ball);
   const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::sphere);
-  alg::MapOptions o;
-  o.combinatorial = true;
+  alg::MapOptions o = combinatorial_options();
   o.replay = alg::ReplayMode::full;
-  o.time_limit_seconds = 600;  // a bound for the test only
   const alg::MapResult r = alg::map_to_domain(p, o);
   INFO(r.message);
   REQUIRE(r.outcome == alg::MapOutcome::stuck);
