@@ -221,6 +221,8 @@ struct MapStatistics {
     std::size_t splits = 0;      // of all-cluster simplices, at p_c (the others change nothing)
     std::size_t expansions = 0;  // planned vertices expanded
     std::size_t drained = 0;     // vertices of the refinement's own expanded after a step
+    // drains that gave up with some of them left (tuning::replay_drain_patience)
+    std::size_t drains_left = 0;
   } replay;
   std::size_t refinement_collapses = 0;       // added vertices collapsed right after their refinement
   std::size_t expansion_restarts = 0;         // runaway restarts (expansion/cluster_expansion.hpp)

@@ -38,13 +38,18 @@ inline constexpr std::size_t vertex_budget_floor = 200000;
 inline constexpr std::size_t vertex_budget_per_input_vertex = 50;
 
 // The replay of a shelling (expansion/shelling_replay.cpp) stops as run away once the mesh has
-// grown by more than per_step x the plan's steps + floor vertices: its drain can add cluster
-// vertices faster than it expands them (a full replay of the dunce-hat ball; with the plan's
-// splits made in plan order, 6x6x6 grids and the ball with 6 or more collars), and after a
-// NOBUENOSS it runs on its own, possibly without a time limit. Replays that complete stay far
-// below (the dunce-hat ball with 32 collars: at most 619 output vertices for a bound of about 14,600).
+// grown by more than per_step x the plan's steps + floor vertices: its refinement can add cluster
+// vertices faster than it expands them (before the drain's patience below, a full replay of the
+// dunce-hat ball; with the plan's splits made in plan order, 6x6x6 grids and the ball with 6 or
+// more collars), and after a NOBUENOSS it runs on its own, possibly without a time limit. Replays
+// that complete stay far below (the dunce-hat ball with 32 collars: at most 619 output vertices
+// for a bound of about 14,600).
 inline constexpr std::size_t replay_growth_per_step = 16;
 inline constexpr std::size_t replay_growth_floor = 1024;
+// Rounds of the replay's drain without fewer of the refinement's own cluster vertices left before
+// it gives up and the plan goes on: on the compact house in a box (replay forced from the start)
+// expanding one such vertex left exactly one more, round after round, until the time limit.
+inline constexpr std::size_t replay_drain_patience = 8;
 // Shelling seeds whose plans until_greedy compares topologically (the one that lets greedy
 // expansion take over soonest is replayed): on the dunce-hat ball with 4 collars, seeds 1 to 8
 // taken alone mapped 0, 1, 1, 0, 2, 1, 2, 0 of two shapes.

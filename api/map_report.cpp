@@ -83,6 +83,7 @@ JsonObject expansion_json(const algorithm::MapStatistics& s) {
     rp.num("plans", n(s.replay.plans)).num("plans_tried", n(s.replay.plans_tried));
     rp.num("splits", n(s.replay.splits)).num("expansions", n(s.replay.expansions));
     rp.num("drained", n(s.replay.drained));
+    rp.num("drains_left", n(s.replay.drains_left));
     std::string ids = "[";
     for (std::size_t i = 0; i < s.replay.input_vertices.size(); ++i)
       ids += (i ? ", " : "") + std::to_string(s.replay.input_vertices[i]);

@@ -3,6 +3,7 @@
 // (ClusterExpander::replay_shelling, docs/algorithm/expansion.md "Replaying a shelling").
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -83,12 +84,16 @@ bool ClusterExpander::replay_expand(VertexId v) {
 
 // The refinement's own cluster vertices (those its pushes left), simple expansions first as the
 // loop's priority has them, one refined expansion only when no simple one is left. Until none is
-// left or none can be expanded. Every vertex below `planned.first` is the plan's, so the scans
-// start there.
+// left, none can be expanded, or tuning::replay_drain_patience rounds in a row have not left fewer
+// than the fewest so far: a refined expansion can leave another such vertex behind, and on the
+// compact house in a box that chase never ended. The plan then goes on with them in the cluster.
+// Every vertex below `planned.first` is the plan's, so the scans start there.
 void ClusterExpander::replay_drain(const PlannedVertices& planned) {
   const auto own = [&](VertexId u) { return e_.unexpanded[u] && !planned.contains(u); };
+  std::size_t fewest = std::numeric_limits<std::size_t>::max(), stale = 0;
   while (cluster_ > 0 && !check_limits() && e_.num_vertices() <= planned.vertex_bound) {
     bool progress = false;
+    std::size_t left = 0;
     for (VertexId u{planned.first}; u < e_.num_vertices(); ++u) {
       if (!own(u)) continue;
       const topology::ClusterVertexStatus st =
@@ -96,7 +101,16 @@ void ClusterExpander::replay_drain(const PlannedVertices& planned) {
       if (st.expandable && try_simple(u, st.manifold_k)) {
         progress = true;
         ++stats_.replay.drained;
+      } else {
+        ++left;
       }
+    }
+    if (left < fewest) {
+      fewest = left;
+      stale = 0;
+    } else if (++stale > tuning::replay_drain_patience) {
+      ++stats_.replay.drains_left;
+      return;
     }
     for (VertexId u{planned.first}; u < e_.num_vertices() && !progress; ++u)
       if (own(u) && replay_expand(u)) {

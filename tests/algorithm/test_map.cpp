@@ -384,3 +384,29 @@ TEST_CASE(
   MESSAGE("first house vertex after " << off_house_before << " of the " << off_house_interior
                                       << " other interior vertices");
 }
+
+TEST_CASE("the compact Bing's house in a box: a shelling replayed from the start hands over and maps") {
+  // Paper Alg. 2 from the shrunk state, the house deferred. After each planned expansion the
+  // replay drains the refinement's own cluster vertices; here a refined expansion of one left
+  // exactly one more, round after round, and the run reached its time limit with 670 cluster
+  // vertices left. The drain now gives up after tuning::replay_drain_patience rounds without
+  // fewer left, the plan goes on, and greedy expansion takes over (docs/algorithm/expansion.md).
+  const GeneratedDomain d = compact_bings_house_box(2, 0);
+  const std::uint32_t n = static_cast<std::uint32_t>(d.mesh.num_vertices());
+  MapOptions o;
+  o.order =
+      *topology::parse_expansion_order("priority,defer:" + std::to_string(n - 309) + "-" + std::to_string(n));
+  o.replay = ReplayMode::until_greedy;
+  o.time_limit_seconds = 1200;  // the chase, were it back, ends here rather than hanging the suite
+  const MapResult r = map_to_domain(problem_from(d, "sphere"), o);
+  REQUIRE_MESSAGE(r.outcome == MapOutcome::success, r.message);
+  CHECK_MESSAGE(r.verification.ok(), r.verification.first_failure);
+  CHECK(r.doubles.check.valid());
+  CHECK(r.stats.replay.ran);
+  CHECK(r.stats.replay.handed_over);
+  CHECK_FALSE(r.stats.nobuenoss);
+  CHECK(r.stats.replay.expansions > 0);
+  CHECK(r.stats.replay.drains_left > 0);  // the case needs the patience
+  MESSAGE(r.stats.replay.expansions << " planned expansions, " << r.stats.replay.drained << " drained, "
+                                    << r.stats.replay.drains_left << " drains given up");
+}

@@ -263,10 +263,12 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("the dunce-hat ball: a full replay of its shelling runs away and stops at its growth bound") {
-  // Replaying every step of Alg. 2 (no handover) drains the refinement's own vertices, which
-  // leave more behind than they take: the replay stops once the mesh passes its bound
-  // (tuning::replay_growth_per_step per step of the plan, plus tuning::replay_growth_floor).
+TEST_CASE("the dunce-hat ball: a full replay of its shelling ends stuck, short of its growth bound") {
+  // Replaying every step of Alg. 2 (no handover) drains the refinement's own vertices after each
+  // planned expansion, and those leave more behind than they take: the drain chased them until the
+  // mesh passed the replay's growth bound. It now gives up after tuning::replay_drain_patience
+  // rounds without fewer left, and a later planned vertex, with some of them still in the
+  // cluster, fails Eq. (1): the replay ends stuck with that reason, the mesh below the bound.
   const topo::TetMesh ball = topo::dunce_hat_ball();
   const auto facets = facets_of(ball);
   const alg::MapProblem p = combinatorial_problem(facets, cmx::generators::BoundaryShape::sphere);
@@ -275,12 +277,12 @@ TEST_CASE("the dunce-hat ball: a full replay of its shelling runs away and stops
   const alg::MapResult r = alg::map_to_domain(p, o);
   INFO(r.message);
   REQUIRE(r.outcome == alg::MapOutcome::stuck);
-  CHECK(r.message.find("the replay of a shelling (paper Alg. 2) ran away") != std::string::npos);
+  CHECK(r.message.find("the replay of a shelling (paper Alg. 2) could not expand vertex") !=
+        std::string::npos);
+  CHECK(r.message.find("ran away") == std::string::npos);
   CHECK_FALSE(r.stats.replay.handed_over);
   CHECK(r.stats.replay.expansions > 0);
-  const std::size_t bound =
-      27 + alg::tuning::replay_growth_per_step * r.stats.replay.steps + alg::tuning::replay_growth_floor;
-  CHECK(r.message.find("beyond " + std::to_string(bound)) != std::string::npos);
+  CHECK(r.stats.replay.drains_left > 0);
 }
 
 TEST_CASE(
