@@ -218,6 +218,9 @@ struct MapStatistics {
     std::size_t plans = 0;        // plans compared (one per shelling seed that found one)
     std::size_t plans_tried = 0;  // replayed geometrically, the last one reported (best first)
     std::size_t steps = 0;       // of Alg. 2's plan
+    // The plan's topological replay: expansions before greedy expansion could take over (steps
+    // + 1 when never; 0 when not asked, as for full). The geometric replay asks the same question.
+    std::size_t plan_handover = 0;
     std::size_t splits = 0;      // of all-cluster simplices, at p_c (the others change nothing)
     std::size_t expansions = 0;  // planned vertices expanded
     std::size_t drained = 0;     // vertices of the refinement's own expanded after a step

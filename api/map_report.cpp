@@ -82,6 +82,7 @@ JsonObject expansion_json(const algorithm::MapStatistics& s) {
     rp.num("shelling_attempts", n(s.replay.shelling_attempts)).num("steps", n(s.replay.steps));
     rp.num("plans", n(s.replay.plans)).num("plans_tried", n(s.replay.plans_tried));
     rp.num("splits", n(s.replay.splits)).num("expansions", n(s.replay.expansions));
+    rp.num("plan_handover", n(s.replay.plan_handover));
     rp.num("drained", n(s.replay.drained));
     rp.num("drains_left", n(s.replay.drains_left));
     std::string ids = "[";

@@ -29,6 +29,9 @@ namespace cmx::algorithm::detail {
 struct ReplayPlans {
   bool ranked = false;
   std::vector<topology::ShellingExpansion> best_first;
+  // Per plan: the expansions of its topological replay before greedy expansion could take over
+  // (its steps + 1 when it never could; 0 when not asked, as for full).
+  std::vector<std::size_t> handover_at;
   std::size_t shelling_attempts = 0;
   std::string why;  // why there is none, when there is none
 };

@@ -170,7 +170,10 @@ void ClusterExpander::rank_replay_plans(ReplayPlans& plans) {
   }
   std::stable_sort(ranked.begin(), ranked.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (auto& [handover, plan] : ranked) plans.best_first.push_back(std::move(plan));
+  for (auto& [handover, plan] : ranked) {
+    plans.best_first.push_back(std::move(plan));
+    plans.handover_at.push_back(handover);
+  }
 }
 
 ExpansionOutcome ClusterExpander::replay_failed(const std::string& why) const {
@@ -257,6 +260,7 @@ ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank, ReplayP
                                            : plans.why);
   const topology::ShellingExpansion& plan = plans.best_first[plan_rank];
   stats_.replay.steps = plan.steps.size();
+  stats_.replay.plan_handover = plans.handover_at[plan_rank];
   aggressive_ = shelling_round_ = true;  // every refinement the loop has, at once
   ReplayState r{
       {},

@@ -12,8 +12,12 @@
 # verdict, and the independent checker's verdict. The dunce-hat balls are combinatorial (no source
 # geometry), so they are checked with verify_tmap.py's functions (every target tet positive, the
 # output a ball); the house box with verify_tmap.py's command line against the same boundary.
+# - with SUBDIVIDED="C:SEED:EDGES:TETS ...", the same balls after random stellar subdivisions
+#   (bench/map/subdivide_facets.py: EDGES edge splits, never of a hat edge, then TETS tet splits,
+#   with Python's random.Random(SEED)), the hat deferred as before: inputs the replay was not tuned on.
 # Usage: bench/map/replay_cases.sh CMX OUT_DIR [LIMIT_SECONDS=300]
-# COLLARS="1 2 ..." and SHAPES="sphere tet ..." replace the default lists; HOUSE=0 skips the box.
+# COLLARS="1 2 ..." and SHAPES="sphere tet ..." replace the default lists (empty: none); HOUSE=0
+# skips the box.
 set -uo pipefail
 here=$(cd "$(dirname "$0")/../.." && pwd)
 cmx=$1 out=$2 limit=${3:-300}
@@ -88,6 +92,16 @@ for c in "${collars[@]}"; do
   n=$((21 + 6 * c))  # vertices: the hat's 8 are the last ids
   for s in "${shapes[@]}"; do
     run_case "dunce-hat-ball:$c" "$mesh" "$s" combinatorial --order "priority,defer:$((n - 8))-$n"
+  done
+done
+for spec in ${SUBDIVIDED:-}; do
+  IFS=: read -r c seed edges tets <<<"$spec"
+  "$cmx" generate-mesh --shape "dunce-hat-ball:$c" -o "$out/dunce_$c.facets" --quiet
+  n=$((21 + 6 * c))
+  mesh=$out/dunce_${c}_s${seed}_${edges}_${tets}.facets
+  python3 "$here/bench/map/subdivide_facets.py" "$out/dunce_$c.facets" "$mesh" $((n - 8)) "$n" "$seed" "$edges" "$tets"
+  for s in "${shapes[@]}"; do
+    run_case "dunce-hat-ball:$c+s$seed:$edges:$tets" "$mesh" "$s" combinatorial --order "priority,defer:$((n - 8))-$n"
   done
 done
 if [ "${HOUSE:-1}" != 0 ]; then

@@ -407,6 +407,9 @@ TEST_CASE("the compact Bing's house in a box: a shelling replayed from the start
   CHECK_FALSE(r.stats.nobuenoss);
   CHECK(r.stats.replay.expansions > 0);
   CHECK(r.stats.replay.drains_left > 0);  // the case needs the patience
+  // The plan was chosen by its topological replay's handover, which the report gives.
+  CHECK(r.stats.replay.plan_handover >= 1);
+  CHECK(r.stats.replay.plan_handover <= r.stats.replay.steps + 1);
   MESSAGE(r.stats.replay.expansions << " planned expansions, " << r.stats.replay.drained << " drained, "
                                     << r.stats.replay.drains_left << " drains given up");
 }

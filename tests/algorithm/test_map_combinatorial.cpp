@@ -283,6 +283,7 @@ TEST_CASE("the dunce-hat ball: a full replay of its shelling ends stuck, short o
   CHECK_FALSE(r.stats.replay.handed_over);
   CHECK(r.stats.replay.expansions > 0);
   CHECK(r.stats.replay.drains_left > 0);
+  CHECK(r.stats.replay.plan_handover == 0);  // full never asks for the handover
 }
 
 TEST_CASE(
