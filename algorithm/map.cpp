@@ -200,11 +200,13 @@ ShellingVerdict search_fallback(const MapProblem& problem, std::size_t threads, 
 // Paper Sec. 4.3 after a NOBUENOSS with a shelling found (ReplayMode::after_nobuenoss): the run
 // again from the shrunk state, replaying the shelling until greedy expansion can take over. The
 // report keeps the greedy run's NOBUENOSS and shelling verdicts; its other counts are the
-// replayed run's. A failure of the replay ends the run as stuck with both reasons.
+// replayed run's. A failure of the replay ends the run as stuck with both reasons. `shelled` is
+// the replayed run's --shelled mode.
 ExpansionOutcome replay_after_nobuenoss(const ValidatedProblem& v, const MapOptions& options,
                                         Clock::time_point start, RunControl& control,
                                         const MapStatistics& before, const ShellingVerdict& verdict,
-                                        Embedding& e, std::vector<HPoint>& prescribed, MapResult& r) {
+                                        ShelledMode shelled, Embedding& e, std::vector<HPoint>& prescribed,
+                                        MapResult& r) {
   MapStatistics greedy = std::move(r.stats);
   r.stats = before;
   MapStatistics& s = r.stats;
@@ -217,6 +219,7 @@ ExpansionOutcome replay_after_nobuenoss(const ValidatedProblem& v, const MapOpti
   phase = Clock::now();
   ExpansionSettings settings = expansion_settings(options, start, control, prescribed, s.input_vertices);
   settings.replay = ReplayMode::until_greedy;
+  settings.shelled = shelled;
   ExpansionOutcome out = expand_cluster(e, settings, s);
   s.seconds_expand = greedy.seconds_expand + seconds_since(phase);
   s.replay.after_nobuenoss = true;
@@ -245,7 +248,24 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
     const ShellingVerdict verdict = search_fallback(problem, options.threads, control, r);
     const bool replay = options.replay == ReplayMode::after_nobuenoss && verdict.replay_completed;
     if (replay && !control.stopped()) {
-      out = replay_after_nobuenoss(v, options, start, control, before, verdict, e, prescribed, r);
+      // In the run's own --shelled mode first, then, if that ends stuck, once more with the
+      // shelling star-shapification wherever bends and pushes fail: on the subdivided dunce-hat
+      // balls (docs/algorithm/expansion.md) each mode mapped cases the other stalled or ran away on.
+      const MapStatistics greedy = r.stats;
+      const std::string nobuenoss = r.message;
+      out = replay_after_nobuenoss(v, options, start, control, before, verdict, options.shelled, e,
+                                   prescribed, r);
+      const ShelledMode raised = std::max(options.shelled, ShelledMode::after_pushes);
+      if (out.outcome == MapOutcome::stuck && options.shelled < raised && !control.stopped()) {
+        const std::string first = out.message.substr(nobuenoss.size());
+        r.stats = greedy;
+        r.message = nobuenoss;
+        out = replay_after_nobuenoss(v, options, start, control, before, verdict, raised, e, prescribed, r);
+        if (out.outcome != MapOutcome::success)
+          out.message += "; with --shelled " + std::string(to_string(options.shelled)) + " it had" +
+                         first.substr(first.find(" it ") + 3);
+        r.stats.replay.shelled_retries = 1;
+      }
       r.outcome = out.outcome;
       r.message = out.message;
     } else if (replay) {

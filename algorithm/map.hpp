@@ -210,6 +210,11 @@ struct MapStatistics {
     bool ran = false;
     bool after_nobuenoss = false;  // run again with the replay because the greedy loop met one
     bool handed_over = false;      // until_greedy: the greedy loop took over
+    // The replayed run's --shelled mode: the run's own, or after_pushes on the retry below.
+    ShelledMode shelled = ShelledMode::when_stuck;
+    // 1: after a NOBUENOSS the replayed run ended stuck in the run's own mode and was replayed again
+    // with `shelled` raised to after_pushes (map.cpp run_method).
+    std::size_t shelled_retries = 0;
     // The input vertices the plan expanded, in its order (the other planned expansions are of
     // the vertices of its splits).
     std::vector<std::uint32_t> input_vertices;

@@ -77,7 +77,9 @@ JsonObject expansion_json(const algorithm::MapStatistics& s) {
   ex.num("shelled_pushes", n(s.shelled_pushes)).num("shelled_pushes_left", n(s.shelled_pushes_left));
   if (s.replay.ran) {
     JsonObject rp;
-    rp.flag("after_nobuenoss", s.replay.after_nobuenoss);
+    rp.flag("after_nobuenoss", s.replay.after_nobuenoss)
+        .str("shelled", std::string(to_string(s.replay.shelled)));
+    rp.num("shelled_retries", n(s.replay.shelled_retries));
     rp.flag("handed_over", s.replay.handed_over).num("chord_splits", n(s.replay.chord_splits));
     rp.num("shelling_attempts", n(s.replay.shelling_attempts)).num("steps", n(s.replay.steps));
     rp.num("plans", n(s.replay.plans)).num("plans_tried", n(s.replay.plans_tried));

@@ -381,6 +381,7 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
         planned = x.replay(rank, plans);
       }
       stats.replay.plans_tried = rank + 1;
+      stats.replay.shelled = s.shelled;
       if (planned.outcome != MapOutcome::stuck ||
           rank + 1 >= std::min(tuning::replay_plan_attempts, stats.replay.plans))
         break;

@@ -13,6 +13,7 @@
 #include "arith/rounding.hpp"
 #include "generators/boundary_shapes.hpp"
 #include "generators/domain_generators.hpp"
+#include "io/read_facets.hpp"
 #include "support/combinatorial_balls.hpp"
 #include "topology/ball_check.hpp"
 #include "topology/coherent_orientation.hpp"
@@ -101,6 +102,9 @@ alg::MapResult map_past_the_hat(std::uint32_t collars, cmx::generators::Boundary
   CHECK(r.stats.nobuenoss);
   CHECK(r.stats.replay.after_nobuenoss);
   CHECK(r.stats.replay.handed_over);
+  // The replayed run in the run's own --shelled mode mapped (no retry with after-pushes).
+  CHECK(r.stats.replay.shelled == shelled);
+  CHECK(r.stats.replay.shelled_retries == 0);
   return r;
 }
 
@@ -260,6 +264,7 @@ TEST_CASE(
     CHECK_FALSE(direct.stats.nobuenoss);
     CHECK(direct.stats.replay.handed_over);
     CHECK_FALSE(direct.stats.replay.after_nobuenoss);
+    CHECK(direct.stats.replay.shelled == alg::ShelledMode::when_stuck);  // asked for: the run's own mode
   }
 }
 
@@ -294,6 +299,36 @@ TEST_CASE(
   // its greedy loop then stalled.
   const alg::MapResult r = map_past_the_hat(3, cmx::generators::BoundaryShape::sphere, 1234, true);
   CHECK(r.stats.replay.shelling_attempts >= alg::tuning::replay_plan_seeds);  // every seed's plan compared
+}
+
+// Seconds in a release build; ten times as long under the sanitizers, which skip it (each replay
+// mode is exercised there by the cases above and below).
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
+constexpr bool skip_slow_replay = true;
+#else
+constexpr bool skip_slow_replay = false;
+#endif
+
+TEST_CASE(
+    "a subdivided dunce-hat ball: a replay that ends stuck is made again with the shelling "
+    "star-shapification" *
+    doctest::skip(skip_slow_replay)) {
+  // The collared ball with 4 collars after random stellar subdivisions (replay_cases/README.md).
+  // Onto a tet, with the hat deferred, the replay in the run's own --shelled mode (when-stuck)
+  // runs away on every plan tried; made again from the shrunk state with after-pushes, it maps.
+  const cmx::io::FacetList list = cmx::io::read_facet_list_file(
+      std::string(CMX_SOURCE_DIR) + "/tests/algorithm/replay_cases/dunce_hat_ball_4_s3_20_20.facets");
+  const alg::MapProblem p = combinatorial_problem(list.tets, cmx::generators::BoundaryShape::tet);
+  alg::MapOptions o = combinatorial_options();
+  o.order = *topo::parse_expansion_order("priority,defer:37-45");  // the hat
+  const alg::MapResult r = alg::map_to_domain(p, o);
+  INFO(r.message);
+  check_realisation(p, r);
+  CHECK(r.stats.nobuenoss);
+  CHECK(r.stats.replay.after_nobuenoss);
+  CHECK(r.stats.replay.handed_over);
+  CHECK(r.stats.replay.shelled_retries == 1);
+  CHECK(r.stats.replay.shelled == alg::ShelledMode::after_pushes);
 }
 
 TEST_CASE(
