@@ -258,9 +258,11 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
       const ShelledMode raised = std::max(options.shelled, ShelledMode::after_pushes);
       if (out.outcome == MapOutcome::stuck && options.shelled < raised && !control.stopped()) {
         const std::string first = out.message.substr(nobuenoss.size());
+        const double first_seconds = r.stats.seconds_expand - greedy.seconds_expand;
         r.stats = greedy;
         r.message = nobuenoss;
         out = replay_after_nobuenoss(v, options, start, control, before, verdict, raised, e, prescribed, r);
+        r.stats.seconds_expand += first_seconds;  // the report's expansion time covers both replays
         if (out.outcome != MapOutcome::success)
           out.message += "; with --shelled " + std::string(to_string(options.shelled)) + " it had" +
                          first.substr(first.find(" it ") + 3);
