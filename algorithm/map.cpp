@@ -200,8 +200,7 @@ ShellingVerdict search_fallback(const MapProblem& problem, std::size_t threads, 
 // Paper Sec. 4.3 after a NOBUENOSS with a shelling found (ReplayMode::after_nobuenoss): the run
 // again from the shrunk state, replaying the shelling until greedy expansion can take over. The
 // report keeps the greedy run's NOBUENOSS and shelling verdicts; its other counts are the
-// replayed run's. A failure of the replay ends the run as stuck with both reasons. `shelled` is
-// the replayed run's --shelled mode.
+// replayed run's. `shelled` is the replayed run's --shelled mode. The caller words a failure.
 ExpansionOutcome replay_after_nobuenoss(const ValidatedProblem& v, const MapOptions& options,
                                         Clock::time_point start, RunControl& control,
                                         const MapStatistics& before, const ShellingVerdict& verdict,
@@ -223,9 +222,6 @@ ExpansionOutcome replay_after_nobuenoss(const ValidatedProblem& v, const MapOpti
   ExpansionOutcome out = expand_cluster(e, settings, s);
   s.seconds_expand = greedy.seconds_expand + seconds_since(phase);
   s.replay.after_nobuenoss = true;
-  if (out.outcome != MapOutcome::success)
-    out.message = r.message + "; replayed from the start (--replay-shelling after-nobuenoss), it " +
-                  (out.outcome == MapOutcome::stuck ? "ended: " : "stopped: ") + out.message;
   return out;
 }
 
@@ -251,25 +247,30 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
       // In the run's own --shelled mode first, then, if that ends stuck, once more with the
       // shelling star-shapification wherever bends and pushes fail: on the subdivided dunce-hat
       // balls (docs/algorithm/expansion.md) each mode mapped cases the other stalled or ran away on.
+      // A failure ends the run as stuck (or stopped) with the NOBUENOSS and every replay's reason.
       const MapStatistics greedy = r.stats;
-      const std::string nobuenoss = r.message;
-      out = replay_after_nobuenoss(v, options, start, control, before, verdict, options.shelled, e,
-                                   prescribed, r);
+      const auto replay_in = [&](ShelledMode mode) {
+        return replay_after_nobuenoss(v, options, start, control, before, verdict, mode, e, prescribed, r);
+      };
+      out = replay_in(options.shelled);
       const ShelledMode raised = std::max(options.shelled, ShelledMode::after_pushes);
+      std::string first_failure;
       if (out.outcome == MapOutcome::stuck && options.shelled < raised && !control.stopped()) {
-        const std::string first = out.message.substr(nobuenoss.size());
+        first_failure =
+            "; with --shelled " + std::string(to_string(options.shelled)) + " it had ended: " + out.message;
         const double first_seconds = r.stats.seconds_expand - greedy.seconds_expand;
         r.stats = greedy;
-        r.message = nobuenoss;
-        out = replay_after_nobuenoss(v, options, start, control, before, verdict, raised, e, prescribed, r);
+        out = replay_in(raised);
         r.stats.seconds_expand += first_seconds;  // the report's expansion time covers both replays
-        if (out.outcome != MapOutcome::success)
-          out.message += "; with --shelled " + std::string(to_string(options.shelled)) + " it had" +
-                         first.substr(first.find(" it ") + 3);
         r.stats.replay.shelled_retries = 1;
       }
       r.outcome = out.outcome;
-      r.message = out.message;
+      if (out.outcome == MapOutcome::success)
+        r.message = out.message;
+      else
+        r.message += "; replayed from the start (--replay-shelling after-nobuenoss), it " +
+                     std::string(out.outcome == MapOutcome::stuck ? "ended: " : "stopped: ") + out.message +
+                     first_failure;
     } else if (replay) {
       r.message += "; not replayed: the run was stopped";
     } else if (verdict.replay_completed) {
