@@ -54,12 +54,18 @@ std::string fallback_message(const ShellingFallback& f) {
 }  // namespace
 
 FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input, const ShellingExpansion& sequence,
-                                               std::size_t check_every, const ReplayStop& stop_when) {
+                                               std::size_t check_every, const ReplayStop& stop_when,
+                                               const std::vector<char>* start) {
   FixedBoundaryReplay r;
   TetMesh m = input;
-  const std::vector<char> boundary = boundary_vertex_flags(m);
   std::vector<char> unexpanded(m.num_vertices());
-  for (std::size_t v = 0; v < unexpanded.size(); ++v) unexpanded[v] = boundary[v] ? 0 : 1;
+  if (start) {
+    for (std::size_t v = 0; v < unexpanded.size() && v < start->size(); ++v)
+      unexpanded[v] = (*start)[v] ? 1 : 0;
+  } else {
+    const std::vector<char> boundary = boundary_vertex_flags(m);
+    for (std::size_t v = 0; v < unexpanded.size(); ++v) unexpanded[v] = boundary[v] ? 0 : 1;
+  }
   std::size_t cluster_left = static_cast<std::size_t>(std::count(unexpanded.begin(), unexpanded.end(), 1));
   ClusterLinkWorkspace ws;
   r.step_expanded.assign(sequence.steps.size(), 0);

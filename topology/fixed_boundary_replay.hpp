@@ -59,10 +59,14 @@ using ReplayStop = std::function<bool(const TetMesh& mesh, const std::vector<cha
 // a failed check fails the replay.
 // `stop_when` (when given) can end the replay early, e.g. once greedy expansion could take over
 // (algorithm/expansion/shelling_replay.cpp picks its plan so); `ok` is then false.
+// `start` (when given, one flag per vertex of `input`) is the cluster to start from instead of
+// every interior vertex: a replay planned again part-way, where some interior vertices are
+// already expanded. Its steps whose vertex is expanded are skipped, as for boundary vertices.
 [[nodiscard]] FixedBoundaryReplay replay_with_fixed_boundary(const TetMesh& input,
                                                              const ShellingExpansion& sequence,
                                                              std::size_t check_every = 0,
-                                                             const ReplayStop& stop_when = {});
+                                                             const ReplayStop& stop_when = {},
+                                                             const std::vector<char>* start = nullptr);
 
 // The fallback of paper Sec. 4.3 for a run without geometry (cmx topo-expand): split every
 // chord of `input`, look for a shelling of the result (find_shelling, bounded by `options`) and,

@@ -360,6 +360,34 @@ TEST_CASE("the dunce-hat ball: 90 tets, shellable, and greedy expansion with the
   CHECK_FALSE(part.ok);
   CHECK(part.expansions < whole.expansions);
   CHECK(part.left > 0);
+  // Started from a given cluster (a replay planned again part-way): from every interior vertex it
+  // is the replay above; from the input vertices the part expanded, only the others are expanded;
+  // from none, nothing is.
+  std::vector<char> cluster(mesh.num_vertices());
+  const std::vector<char> boundary = boundary_vertex_flags(mesh);
+  for (std::size_t v = 0; v < cluster.size(); ++v) cluster[v] = boundary[v] ? 0 : 1;
+  const FixedBoundaryReplay from_all = replay_with_fixed_boundary(mesh, e, 0, {}, &cluster);
+  CHECK(from_all.ok == whole.ok);
+  CHECK(from_all.expansions == whole.expansions);
+  std::vector<char> at_stop;
+  const FixedBoundaryReplay until =
+      replay_with_fixed_boundary(mesh, e, 0, [&](const TetMesh&, const std::vector<char>& unexpanded) {
+        for (std::size_t v = 19; v < 27; ++v)
+          if (!unexpanded[v]) {
+            at_stop.assign(unexpanded.begin(),
+                           unexpanded.begin() + static_cast<std::ptrdiff_t>(mesh.num_vertices()));
+            return true;
+          }
+        return false;
+      });
+  REQUIRE(until.stopped);
+  REQUIRE(until.input_expansions > 0);
+  const FixedBoundaryReplay rest = replay_with_fixed_boundary(mesh, e, 0, {}, &at_stop);
+  CHECK(rest.input_expansions == whole.input_expansions - until.input_expansions);
+  const std::vector<char> none(mesh.num_vertices(), 0);
+  const FixedBoundaryReplay from_none = replay_with_fixed_boundary(mesh, e, 0, {}, &none);
+  CHECK(from_none.ok);
+  CHECK(from_none.expansions == 0);
   CHECK_THROWS_AS((void)dunce_hat_ball(nullptr, 0), std::invalid_argument);
   CHECK_THROWS_AS((void)dunce_hat_ball(nullptr, 65), std::invalid_argument);
 }
