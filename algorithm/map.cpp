@@ -200,12 +200,14 @@ ShellingVerdict search_fallback(const MapProblem& problem, std::size_t threads, 
 // Paper Sec. 4.3 after a NOBUENOSS with a shelling found (ReplayMode::after_nobuenoss): the run
 // again from the shrunk state, replaying the shelling until greedy expansion can take over. The
 // report keeps the greedy run's NOBUENOSS and shelling verdicts; its other counts are the
-// replayed run's. `shelled` is the replayed run's --shelled mode. The caller words a failure.
+// replayed run's. A plan that fails in the run's own --shelled mode is made again with the
+// shelling star-shapification wherever bends and pushes fail before the next plan is tried
+// (ExpansionSettings::raise_shelled): on the subdivided dunce-hat balls (docs/algorithm/expansion.md)
+// each mode mapped cases the other stalled or ran away on. The caller words a failure.
 ExpansionOutcome replay_after_nobuenoss(const ValidatedProblem& v, const MapOptions& options,
                                         Clock::time_point start, RunControl& control,
                                         const MapStatistics& before, const ShellingVerdict& verdict,
-                                        ShelledMode shelled, Embedding& e, std::vector<HPoint>& prescribed,
-                                        MapResult& r) {
+                                        Embedding& e, std::vector<HPoint>& prescribed, MapResult& r) {
   MapStatistics greedy = std::move(r.stats);
   r.stats = before;
   MapStatistics& s = r.stats;
@@ -218,7 +220,7 @@ ExpansionOutcome replay_after_nobuenoss(const ValidatedProblem& v, const MapOpti
   phase = Clock::now();
   ExpansionSettings settings = expansion_settings(options, start, control, prescribed, s.input_vertices);
   settings.replay = ReplayMode::until_greedy;
-  settings.shelled = shelled;
+  settings.raise_shelled = true;
   ExpansionOutcome out = expand_cluster(e, settings, s);
   s.seconds_expand = greedy.seconds_expand + seconds_since(phase);
   s.replay.after_nobuenoss = true;
@@ -244,33 +246,14 @@ void run_method(const MapProblem& problem, const ValidatedProblem& v, const MapO
     const ShellingVerdict verdict = search_fallback(problem, options.threads, control, r);
     const bool replay = options.replay == ReplayMode::after_nobuenoss && verdict.replay_completed;
     if (replay && !control.stopped()) {
-      // In the run's own --shelled mode first, then, if that ends stuck, once more with the
-      // shelling star-shapification wherever bends and pushes fail: on the subdivided dunce-hat
-      // balls (docs/algorithm/expansion.md) each mode mapped cases the other stalled or ran away on.
-      // A failure ends the run as stuck (or stopped) with the NOBUENOSS and every replay's reason.
-      const MapStatistics greedy = r.stats;
-      const auto replay_in = [&](ShelledMode mode) {
-        return replay_after_nobuenoss(v, options, start, control, before, verdict, mode, e, prescribed, r);
-      };
-      out = replay_in(options.shelled);
-      const ShelledMode raised = std::max(options.shelled, ShelledMode::after_pushes);
-      std::string first_failure;
-      if (out.outcome == MapOutcome::stuck && options.shelled < raised && !control.stopped()) {
-        first_failure =
-            "; with --shelled " + std::string(to_string(options.shelled)) + " it had ended: " + out.message;
-        const double first_seconds = r.stats.seconds_expand - greedy.seconds_expand;
-        r.stats = greedy;
-        out = replay_in(raised);
-        r.stats.seconds_expand += first_seconds;  // the report's expansion time covers both replays
-        r.stats.replay.shelled_retries = 1;
-      }
+      // A failure ends the run as stuck (or stopped) with the NOBUENOSS and the replay's reasons.
+      out = replay_after_nobuenoss(v, options, start, control, before, verdict, e, prescribed, r);
       r.outcome = out.outcome;
       if (out.outcome == MapOutcome::success)
         r.message = out.message;
       else
         r.message += "; replayed from the start (--replay-shelling after-nobuenoss), it " +
-                     std::string(out.outcome == MapOutcome::stuck ? "ended: " : "stopped: ") + out.message +
-                     first_failure;
+                     std::string(out.outcome == MapOutcome::stuck ? "ended: " : "stopped: ") + out.message;
     } else if (replay) {
       r.message += "; not replayed: the run was stopped";
     } else if (verdict.replay_completed) {

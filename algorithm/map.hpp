@@ -210,10 +210,10 @@ struct MapStatistics {
     bool ran = false;
     bool after_nobuenoss = false;  // run again with the replay because the greedy loop met one
     bool handed_over = false;      // until_greedy: the greedy loop took over
-    // The replayed run's --shelled mode: the run's own, or after_pushes on the retry below.
+    // The last replay's --shelled mode: the run's own, or after_pushes on a retry below.
     ShelledMode shelled = ShelledMode::when_stuck;
-    // 1: after a NOBUENOSS the replayed run ended stuck in the run's own mode and was replayed again
-    // with `shelled` raised to after_pushes (map.cpp run_method).
+    // After a NOBUENOSS, the replays made again with `shelled` raised to after_pushes, one per
+    // plan that ended stuck in the run's own mode (ExpansionSettings::raise_shelled).
     std::size_t shelled_retries = 0;
     // The input vertices the plan expanded, in its order (the other planned expansions are of
     // the vertices of its splits).
@@ -231,6 +231,8 @@ struct MapStatistics {
     std::size_t drained = 0;     // vertices of the refinement's own expanded after a step
     // drains that gave up with some of them left (tuning::replay_drain_patience)
     std::size_t drains_left = 0;
+    // the plan planned again from where it met a step it could not make (tuning::replay_replans)
+    std::size_t replans = 0;
   } replay;
   std::size_t refinement_collapses = 0;       // added vertices collapsed right after their refinement
   std::size_t expansion_restarts = 0;         // runaway restarts (expansion/cluster_expansion.hpp)

@@ -58,6 +58,10 @@ inline constexpr std::size_t replay_plan_seeds = 8;
 // replay started in): with the plan's splits made only when needed, the best plan of the
 // dunce-hat ball with 32 collars meets a split vertex it cannot expand and the second maps.
 inline constexpr std::size_t replay_plan_attempts = 4;
+// Times one replayed plan is planned again from where it met a step it could not make
+// (shelling_replay.cpp, replay_shelling): each costs the shelling searches and topological
+// replays of replay_plan_seeds plans on the mesh as it then is.
+inline constexpr std::size_t replay_replans = 4;
 
 // Smoothing period (expansions) turned on for the attempts after a runaway restart, when the run
 // did not ask for smoothing itself: random orders on Freudenthal grids of 4,807 and 6,859

@@ -86,7 +86,7 @@ JsonObject expansion_json(const algorithm::MapStatistics& s) {
     rp.num("splits", n(s.replay.splits)).num("expansions", n(s.replay.expansions));
     rp.num("plan_handover", n(s.replay.plan_handover));
     rp.num("drained", n(s.replay.drained));
-    rp.num("drains_left", n(s.replay.drains_left));
+    rp.num("drains_left", n(s.replay.drains_left)).num("replans", n(s.replay.replans));
     std::string ids = "[";
     for (std::size_t i = 0; i < s.replay.input_vertices.size(); ++i)
       ids += (i ? ", " : "") + std::to_string(s.replay.input_vertices[i]);

@@ -157,8 +157,10 @@ void add_run_options(CLI::App& app, MapArgs& a) {
              "until-greedy, from the start until topological expansion of the cluster\n"
              "left completes in the run's order and in it without its deferral, then\n"
              "the greedy loop in the latter (of 8 shellings, the one whose plan gets\n"
-             "there soonest; the next, up to 4, when one runs away); full, every step\n"
-             "(of the first shelling found). Splits of the plan wait until it needs them")
+             "there soonest; the next, up to 4, when one runs away or the greedy loop\n"
+             "after it ends stuck); full, every step (of the first shelling found).\n"
+             "Splits of the plan wait until it needs them; a plan that meets a step it\n"
+             "cannot make is planned again from there, up to 4 times")
       ->type_name("MODE");
 }
 

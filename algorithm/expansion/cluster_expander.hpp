@@ -76,7 +76,8 @@ class ClusterExpander {
   ExpansionOutcome run();
   // Paper Sec. 4.3: the replay of a shelling (MapOptions::replay), once, before run(); success
   // with the cluster left to the greedy loop when it handed over (shelling_replay.cpp).
-  ExpansionOutcome replay(std::size_t plan_rank, ReplayPlans& plans);
+  // `replans`: how often a plan that meets a step it cannot make is planned again from there.
+  ExpansionOutcome replay(std::size_t plan_rank, ReplayPlans& plans, std::size_t replans);
   bool refine_by(VertexId v, RefinementStep step);  // cluster_expansion.hpp
   // After run() returned a runaway: the state to go back to.
   std::optional<Checkpoint> take_checkpoint() { return std::move(checkpoint_); }
@@ -222,7 +223,7 @@ class ClusterExpander {
   // topology::ShellingOptions::interior) and converted by Alg. 2, and each step made: a split of
   // an all-cluster simplex at p_c, an expansion of the planned vertex with all the refinement,
   // then the refinement's own cluster vertices drained. `stats_.replay` counts.
-  ExpansionOutcome replay_shelling(std::size_t plan_rank, ReplayPlans& plans);
+  ExpansionOutcome replay_shelling(std::size_t plan_rank, ReplayPlans& plans, std::size_t replans);
   void replay_split_chords();
   bool replay_expand(VertexId v);
   // The plan's vertices: every vertex below `first` (the mesh when the plan was made) and the
@@ -249,7 +250,9 @@ class ClusterExpander {
                                               VertexId v, ReplayState& r);
   void replay_drain(const PlannedVertices& planned);
   bool greedy_can_take_over() const;
-  void rank_replay_plans(ReplayPlans& plans);
+  void rank_replay_plans(ReplayPlans& plans, bool from_here);
+  std::optional<ExpansionOutcome> replay_plan(const topology::ShellingExpansion& plan,
+                                              std::size_t vertex_bound);
   ExpansionOutcome replay_failed(const std::string& why) const;
 
   Embedding& e_;

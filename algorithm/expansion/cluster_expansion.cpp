@@ -364,42 +364,14 @@ bool refine_by(Embedding& e, VertexId v, RefinementStep step, const ExpansionSet
   return x.refine_by(v, step);
 }
 
-ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats) {
-  ExpansionSettings s = settings;
-  if (s.order.kind == topology::ExpansionOrderKind::strict_index) s.planned_vertices = e.num_vertices();
-  if (s.replay == ReplayMode::until_greedy || s.replay == ReplayMode::full) {
-    // The plan once; the greedy attempts and their restarts start where it handed over. A plan
-    // whose replay fails (runs away, or meets a step it cannot make) is replaced by the next best,
-    // from the same start.
-    ExpansionOutcome planned;
-    detail::ReplayPlans plans;
-    const Embedding before_replay = e;
-    const MapStatistics stats_before = stats;
-    for (std::size_t rank = 0;; ++rank) {
-      {
-        detail::ClusterExpander x(e, s, stats);
-        planned = x.replay(rank, plans);
-      }
-      stats.replay.plans_tried = rank + 1;
-      stats.replay.shelled = s.shelled;
-      if (planned.outcome != MapOutcome::stuck ||
-          rank + 1 >= std::min(tuning::replay_plan_attempts, stats.replay.plans))
-        break;
-      e = before_replay;
-      stats = stats_before;
-    }
-    if (planned.outcome != MapOutcome::success || !stats.replay.handed_over) return planned;
-    s.replay = ReplayMode::off;
-    // A deferral is an experiment's way to meet a NOBUENOSS; the replay has led the cluster mesh
-    // past it, and the greedy loop goes on in the order without it (greedy_can_take_over checked
-    // that this order completes topologically too). Kept, it makes the loop expand the deferred
-    // vertices last, each among expanded neighbours only, where the refinement churns.
-    s.order.defer_first = s.order.defer_end = 0;
-  }
+namespace {
+
+// The greedy loop (Alg. 1) with its runaway restarts, from the state `e` is in.
+ExpansionOutcome expand_greedily(Embedding& e, ExpansionSettings s, MapStatistics& stats) {
   std::optional<detail::Checkpoint> first;  // the state before any greedy expansion
-  if (settings.max_restarts > 0) first = detail::Checkpoint{e, stats, 0};
+  if (s.max_restarts > 0) first = detail::Checkpoint{e, stats, 0};
   for (std::size_t restart = 0;; ++restart) {
-    const bool watch = restart < settings.max_restarts;
+    const bool watch = restart < s.max_restarts;
     ExpansionOutcome out;
     std::optional<detail::Checkpoint> back;
     {
@@ -422,6 +394,79 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
     // expanded vertices whose placement makes later cones empty.
     if (s.smooth_every == 0) s.smooth_every = tuning::restart_smooth_every;
   }
+}
+
+}  // namespace
+
+ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats) {
+  ExpansionSettings s = settings;
+  if (s.order.kind == topology::ExpansionOrderKind::strict_index) s.planned_vertices = e.num_vertices();
+  if (s.replay != ReplayMode::until_greedy && s.replay != ReplayMode::full)
+    return expand_greedily(e, s, stats);
+  // The plans once, best first. A plan whose replay fails (runs away, or meets a step it cannot
+  // make), or after whose handover the greedy loop ends stuck, is made again from the same start:
+  // with the shelling star-shapification wherever bends and pushes fail (raise_shelled), then
+  // with the next plan (up to tuning::replay_plan_attempts). When every one has failed, the same
+  // again, each plan planned again where it fails (up to tuning::replay_replans times). On the
+  // subdivided dunce-hat balls each --shelled mode mapped cases the other stalled
+  // on, the loop stalled after one plan's handover and mapped after another's, and two cases map
+  // only when planned again; planned again first, the collared ball with 32 collars mapped with
+  // four times the splits where the next plan had needed 13 (docs/algorithm/expansion.md).
+  detail::ReplayPlans plans;
+  const Embedding before_replay = e;
+  const MapStatistics stats_before = stats;
+  const ShelledMode raised = std::max(s.shelled, ShelledMode::after_pushes);
+  std::vector<ShelledMode> modes{s.shelled};
+  if (s.raise_shelled && raised != s.shelled) modes.push_back(raised);
+  std::string first_failure;  // the run's own mode's, when a raised one ends the run
+  std::size_t raised_attempts = 0;
+  const auto attempt = [&](std::size_t rank, ShelledMode mode, std::size_t replans) {
+    ExpansionSettings replay = s;
+    replay.shelled = mode;
+    raised_attempts += mode != s.shelled;
+    ExpansionOutcome out;
+    {
+      detail::ClusterExpander x(e, replay, stats);
+      out = x.replay(rank, plans, replans);
+    }
+    stats.replay.plans_tried = rank + 1;
+    stats.replay.shelled = mode;
+    stats.replay.shelled_retries = raised_attempts;
+    if (out.outcome == MapOutcome::success && stats.replay.handed_over) {
+      // A deferral is an experiment's way to meet a NOBUENOSS; the replay has led the cluster
+      // mesh past it, and the greedy loop goes on in the order without it (greedy_can_take_over
+      // checked that this order completes topologically too). Kept, it makes the loop expand the
+      // deferred vertices last, each among expanded neighbours only, where it churns.
+      ExpansionSettings greedy = replay;
+      greedy.replay = ReplayMode::off;
+      greedy.order.defer_first = greedy.order.defer_end = 0;
+      out = expand_greedily(e, greedy, stats);
+    }
+    return out;
+  };
+  // The first attempt ranks the plans; the schedule follows from how many there are.
+  ExpansionOutcome out = attempt(0, modes.front(), 0);
+  struct Attempt {
+    std::size_t rank;
+    ShelledMode mode;
+    std::size_t replans;
+  };
+  std::vector<Attempt> schedule;
+  const std::size_t ranks = std::min(tuning::replay_plan_attempts, plans.best_first.size());
+  for (std::size_t rank = 0; rank < ranks; ++rank)
+    for (const ShelledMode mode : modes) schedule.push_back({rank, mode, 0});
+  for (std::size_t rank = 0; rank < ranks; ++rank)
+    for (const ShelledMode mode : modes) schedule.push_back({rank, mode, tuning::replay_replans});
+  for (std::size_t k = 1; out.outcome == MapOutcome::stuck && k < schedule.size(); ++k) {
+    if (schedule[k - 1].mode == s.shelled && first_failure.empty()) first_failure = out.message;
+    e = before_replay;
+    stats = stats_before;
+    out = attempt(schedule[k].rank, schedule[k].mode, schedule[k].replans);
+  }
+  if (out.outcome != MapOutcome::success && stats.replay.shelled != s.shelled && !first_failure.empty())
+    out.message +=
+        "; with --shelled " + std::string(to_string(s.shelled)) + " it had ended: " + first_failure;
+  return out;
 }
 
 }  // namespace cmx::algorithm

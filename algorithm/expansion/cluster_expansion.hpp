@@ -56,6 +56,9 @@ struct ExpansionSettings {
   bool collapse_after_refinement = true;  // paper Sec. 4.2.2 (MapOptions::collapse_refinement)
   ShelledMode shelled = ShelledMode::when_stuck;  // MapOptions::shelled
   ReplayMode replay = ReplayMode::off;            // MapOptions::replay
+  // A replayed plan that fails, or after whose handover the greedy loop ends stuck, is made once
+  // more with `shelled` raised to after_pushes before the next plan (the replay after a NOBUENOSS).
+  bool raise_shelled = false;
   std::size_t subcluster_size = 4;        // largest subcluster tried (< 2: off; MapOptions::subclusters)
   // Runaway restarts (below): how many, at most; 0 turns the detection off.
   std::size_t max_restarts = 8;

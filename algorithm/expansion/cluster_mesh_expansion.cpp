@@ -102,9 +102,9 @@ ExpansionOutcome ClusterExpander::run() {
   return {MapOutcome::success, {}};
 }
 
-ExpansionOutcome ClusterExpander::replay(std::size_t plan_rank, ReplayPlans& plans) {
+ExpansionOutcome ClusterExpander::replay(std::size_t plan_rank, ReplayPlans& plans, std::size_t replans) {
   count_cluster();
-  ExpansionOutcome planned = replay_shelling(plan_rank, plans);
+  ExpansionOutcome planned = replay_shelling(plan_rank, plans, replans);
   report_progress(planned.outcome != MapOutcome::success || cluster_ == 0);
   return planned;
 }

@@ -134,9 +134,14 @@ bool ClusterExpander::greedy_can_take_over() const {
 // asking as the geometric replay does) takes before greedy expansion could take over, fewest
 // first (seed order on a tie): each replayed step costs refinement. full takes the first seed's
 // plan only.
-void ClusterExpander::rank_replay_plans(ReplayPlans& plans) {
+//
+// `from_here`: planned again part-way, from the cluster as it is (some interior vertices expanded,
+// the refinement's own vertices in it); the topological replays start there, and a plan whose
+// topological replay fails Eq. (1) before it could hand over is not kept.
+void ClusterExpander::rank_replay_plans(ReplayPlans& plans, bool from_here) {
   plans.ranked = true;
-  const std::vector<char> interior = e_.unexpanded;  // every interior vertex is in the cluster now
+  // The cluster now: every interior vertex at the start, the shelling's cheapest steps first.
+  const std::vector<char> interior = e_.unexpanded;
   const std::size_t seeds = s_.replay == ReplayMode::until_greedy ? tuning::replay_plan_seeds : 1;
   std::vector<std::pair<std::size_t, topology::ShellingExpansion>> ranked;  // (hand-over, plan)
   for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
@@ -161,11 +166,20 @@ void ClusterExpander::rank_replay_plans(ReplayPlans& plans) {
     }
     std::size_t asked = 0, next = 0;
     const topology::FixedBoundaryReplay sim = topology::replay_with_fixed_boundary(
-        e_.mesh, plan, 0, [&](const topology::TetMesh& m, const std::vector<char>& unexpanded) {
+        e_.mesh, plan, 0,
+        [&](const topology::TetMesh& m, const std::vector<char>& unexpanded) {
           if (++asked < next) return false;
           next = next_handover_check(asked);
           return can_take_over(m, s_.order, unexpanded);
-        });
+        },
+        from_here ? &interior : nullptr);
+    if (from_here && (sim.eq1_failures > 0 || !(sim.stopped || sim.ok))) {
+      if (plans.why.empty())
+        plans.why = "the topological replay of a plan made there failed: " +
+                    (sim.first_failure.empty() ? std::to_string(sim.left) + " cluster vertices left"
+                                               : sim.first_failure);
+      continue;
+    }
     ranked.emplace_back(sim.stopped ? sim.expansions : plan.steps.size() + 1, std::move(plan));
   }
   std::stable_sort(ranked.begin(), ranked.end(),
@@ -180,7 +194,12 @@ ExpansionOutcome ClusterExpander::replay_failed(const std::string& why) const {
   return {MapOutcome::stuck,
           "the replay of a shelling (paper Alg. 2) " + why + " (" + std::to_string(stats_.replay.expansions) +
               " replayed expansions, " + std::to_string(stats_.replay.drained) +
-              " of the refinement's own vertices, " + std::to_string(cluster_) + " cluster vertices left)"};
+              " of the refinement's own vertices, " + std::to_string(cluster_) + " cluster vertices left" +
+              (stats_.replay.replans == 0 ? ""
+               : stats_.replay.replans == 1
+                   ? ", planned again once"
+                   : ", planned again " + std::to_string(stats_.replay.replans) + " times") +
+              ")"};
 }
 
 // Why a step's split is skipped unless its simplex is all cluster vertices: a split of a simplex
@@ -248,26 +267,11 @@ std::optional<ExpansionOutcome> ClusterExpander::replay_step(const topology::She
   return std::nullopt;
 }
 
-ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank, ReplayPlans& plans) {
-  stats_.replay = {};
-  stats_.replay.ran = true;
-  replay_split_chords();
-  if (!plans.ranked) rank_replay_plans(plans);
-  stats_.replay.shelling_attempts = plans.shelling_attempts;
-  stats_.replay.plans = plans.best_first.size();
-  if (plan_rank >= plans.best_first.size())
-    return replay_failed(plans.why.empty() ? "has no plan of rank " + std::to_string(plan_rank + 1)
-                                           : plans.why);
-  const topology::ShellingExpansion& plan = plans.best_first[plan_rank];
-  stats_.replay.steps = plan.steps.size();
-  stats_.replay.plan_handover = plans.handover_at[plan_rank];
-  aggressive_ = shelling_round_ = true;  // every refinement the loop has, at once
-  ReplayState r{
-      {},
-      {},
-      {static_cast<std::uint32_t>(e_.num_vertices()),
-       e_.num_vertices() + tuning::replay_growth_per_step * plan.steps.size() + tuning::replay_growth_floor,
-       {}}};
+// One plan from the state the replay is in: nullopt once it has handed over or expanded every
+// cluster vertex, else why it stopped.
+std::optional<ExpansionOutcome> ClusterExpander::replay_plan(const topology::ShellingExpansion& plan,
+                                                             std::size_t vertex_bound) {
+  ReplayState r{{}, {}, {static_cast<std::uint32_t>(e_.num_vertices()), vertex_bound, {}}};
   for (std::size_t i = 0; i < e_.num_vertices(); ++i)
     r.geo.push_back(VertexId(static_cast<std::uint32_t>(i)));
   const auto ran_away = [&] {
@@ -286,7 +290,7 @@ ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank, ReplayP
     if (s_.replay == ReplayMode::until_greedy && stats_.replay.expansions >= next_check) {
       if (greedy_can_take_over()) {
         stats_.replay.handed_over = true;
-        break;
+        return std::nullopt;
       }
       next_check = next_handover_check(stats_.replay.expansions);
     }
@@ -316,13 +320,58 @@ ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank, ReplayP
     if (v == topology::invalid_vertex || v == waiting_vertex || !e_.unexpanded[v]) continue;
     if (auto failed = replay_step(plan, i, v, r)) return *failed;
   }
-  if (stats_.replay.handed_over) return {MapOutcome::success, {}};
   if (auto failed = replay_waiting_splits(plan, r, [] { return false; })) return *failed;
   replay_drain(r.planned);
   if (auto stop = check_limits()) return *stop;
   if (e_.num_vertices() > r.planned.vertex_bound) return ran_away();
   if (cluster_ > 0) return replay_failed("ended with cluster vertices left");
-  report_progress(true);
+  return std::nullopt;
+}
+
+// A plan that meets a step it cannot make is planned again from where it stopped, up to
+// `replans` times (expand_cluster asks for it only once every plan has failed): a shelling of the mesh as it
+// is, whose plan holds the refinement's own vertices left in the cluster and the splits made late. Why: a
+// plan is exact only while the cluster mesh is the plan's, and two things make it differ, both seen on the
+// subdivided dunce-hat balls (docs/algorithm/expansion.md): a vertex a push left at p_c whose unexpanded link
+// became a cycle once the vertex it was pushed from expanded (so no drain can take it until a planned
+// neighbour goes), and a split made later than its step, after an apex of its simplex expanded.
+ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank, ReplayPlans& plans,
+                                                  std::size_t replans) {
+  stats_.replay = {};
+  stats_.replay.ran = true;
+  replay_split_chords();
+  if (!plans.ranked) rank_replay_plans(plans, false);
+  stats_.replay.shelling_attempts = plans.shelling_attempts;
+  stats_.replay.plans = plans.best_first.size();
+  if (plan_rank >= plans.best_first.size())
+    return replay_failed(plans.why.empty() ? "has no plan of rank " + std::to_string(plan_rank + 1)
+                                           : plans.why);
+  const topology::ShellingExpansion* plan = &plans.best_first[plan_rank];
+  stats_.replay.steps = plan->steps.size();
+  stats_.replay.plan_handover = plans.handover_at[plan_rank];
+  aggressive_ = shelling_round_ = true;  // every refinement the loop has, at once
+  // The first plan's growth bound holds for the plans made part-way too: on the subdivided balls
+  // plans made again and again otherwise grew the mesh to 20,000 vertices until the time limit.
+  const std::size_t vertex_bound =
+      e_.num_vertices() + tuning::replay_growth_per_step * plan->steps.size() + tuning::replay_growth_floor;
+  ReplayPlans again;  // the last plan made part-way
+  for (;;) {
+    std::optional<ExpansionOutcome> failed = replay_plan(*plan, vertex_bound);
+    if (!failed) break;
+    if (failed->outcome != MapOutcome::stuck || failed->runaway || stats_.replay.replans >= replans)
+      return *failed;
+    again = {};
+    rank_replay_plans(again, true);
+    stats_.replay.shelling_attempts += again.shelling_attempts;
+    if (again.best_first.empty()) {
+      failed->message += "; planned again from there: " + (again.why.empty() ? "no plan" : again.why);
+      return *failed;
+    }
+    ++stats_.replay.replans;
+    plan = &again.best_first.front();
+    stats_.replay.steps += plan->steps.size();
+  }
+  if (!stats_.replay.handed_over) report_progress(true);
   return {MapOutcome::success, {}};
 }
 
