@@ -7,12 +7,13 @@
 # - the compact Bing's house in a box with the house deferred and the replay forced from the start
 #   (`--init shrink --replay-shelling until-greedy`): the greedy loop alone passes the house, so
 #   this asks whether the replay scales to a house-sized NOBUENOSS deep inside a mesh.
-# Columns: exit, wall seconds, the report's replay figures (plans tried, planned expansions,
-# splits made, refinement vertices drained, drains that gave up), output vertices, the doubles'
-# verdict, and the independent checker's verdict. The dunce-hat balls are combinatorial (no source
-# geometry), so they are checked with the shared tools' functions (every target tet positive by
-# balltopo's exact orient, the output a ball); the house box with verify_tmap.py's command line
-# against the same boundary.
+# Columns: exit, wall seconds, the report's replay figures (plans tried, the last replay's
+# --shelled mode, times planned again part-way, planned expansions, splits made, refinement
+# vertices drained, drains that gave up), output vertices, the doubles' verdict, and the
+# independent checker's verdict. The dunce-hat balls are combinatorial (no source geometry), so
+# they are checked with the shared tools' functions (every target tet positive by balltopo's exact
+# orient, the output a ball); the house box with verify_tmap.py's command line against the same
+# boundary.
 # - with SUBDIVIDED="C:SEED:EDGES:TETS ...", the same balls after random stellar subdivisions
 #   (bench/map/subdivide_facets.py: EDGES edge splits, never of a hat edge, then TETS tet splits,
 #   with Python's random.Random(SEED)), the hat deferred as before: inputs the replay was not tuned on.
@@ -46,18 +47,18 @@ print(("positive" if bad == 0 else f"{bad} non-positive") + (", ball" if ball el
 PY
 }
 
-report_fields() {  # REPORT.json -> "plans_tried | expansions | splits | drained | drains_left | out_V | doubles"
+report_fields() {  # REPORT.json -> "plans_tried | shelled | replans | expansions | splits | drained | drains_left | out_V | doubles"
   python3 - "$1" <<'PY'
 import json, sys
 try:
     r = json.load(open(sys.argv[1]))
 except Exception:
-    print("- | - | - | - | - | - | -"); sys.exit()
+    print("- | - | - | - | - | - | - | - | -"); sys.exit()
 p = r.get("expansion", {}).get("replay", {})
 g = lambda k: str(p.get(k, "-"))
 out_v = r.get("output", {}).get("vertices", "-")
 dv = r.get("verdict", {}).get("double_valid", "-")
-print(" | ".join([g("plans_tried"), g("expansions"), g("splits"), g("drained"), g("drains_left"),
+print(" | ".join([g("plans_tried"), g("shelled"), g("replans"), g("expansions"), g("splits"), g("drained"), g("drains_left"),
                   str(out_v), {True: "yes", False: "no"}.get(dv, str(dv))]))
 PY
 }
@@ -87,8 +88,8 @@ run_case() {  # NAME MESH SHAPE CHECK_KIND [cmx map options...]
   printf '| %s | %s | %s | %s | %s | %s |\n' "$name" "$shape" "$rc" "$sec" "$(report_fields "$run.json")" "$check"
 }
 
-echo "| case | shape | exit | seconds | plans tried | planned expansions | splits | drained | drains given up | output vertices | doubles valid | check |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| case | shape | exit | seconds | plans tried | last mode | planned again | planned expansions | splits | drained | drains given up | output vertices | doubles valid | check |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for c in "${collars[@]}"; do
   mesh=$out/dunce_$c.facets
   "$cmx" generate-mesh --shape "dunce-hat-ball:$c" -o "$mesh" --quiet
