@@ -36,9 +36,9 @@ const HelpText help = {
     "Stuck on a NOBUENOSS (no cluster vertex satisfies Eq. (1)), the run then searches for a shelling\n"
     "of the input (8 greedy attempts), which the paper's fallback needs, and says whether it found one.\n"
     "When one is found, the run starts again and replays it (paper Alg. 2) until greedy expansion can\n"
-    "take over (--replay-shelling after-nobuenoss), and once more with --shelled after-pushes if that\n"
-    "ends stuck; otherwise, or when the replay fails, it ends as stuck (exit 7) with the reasons. On\n"
-    "large inputs the replay's refinement can run away.\n"};
+    "take over (--replay-shelling after-nobuenoss); each plan that ends stuck is replayed once more\n"
+    "with --shelled after-pushes before the next. Otherwise, or when every replay fails, it ends as\n"
+    "stuck (exit 7) with the reasons. On large inputs the replay's refinement can run away.\n"};
 
 std::string one_of(const std::string& what, const std::string& text, const std::string& choices) {
   return "unknown " + what + " '" + text + "' (" + choices + ")";

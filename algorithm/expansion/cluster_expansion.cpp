@@ -408,10 +408,10 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
   // with the shelling star-shapification wherever bends and pushes fail (raise_shelled), then
   // with the next plan (up to tuning::replay_plan_attempts). When every one has failed, the same
   // again, each plan planned again where it fails (up to tuning::replay_replans times). On the
-  // subdivided dunce-hat balls each --shelled mode mapped cases the other stalled
-  // on, the loop stalled after one plan's handover and mapped after another's, and two cases map
-  // only when planned again; planned again first, the collared ball with 32 collars mapped with
-  // four times the splits where the next plan had needed 13 (docs/algorithm/expansion.md).
+  // subdivided dunce-hat balls each --shelled mode mapped cases the other stalled on, the loop
+  // stalled after one plan's handover and mapped after another's, and two cases map only when
+  // planned again; planned again first, the collared ball with 32 collars mapped with four times
+  // the splits where the next plan had needed 13 (docs/algorithm/expansion.md).
   detail::ReplayPlans plans;
   const Embedding before_replay = e;
   const MapStatistics stats_before = stats;

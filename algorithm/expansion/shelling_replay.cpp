@@ -328,13 +328,14 @@ std::optional<ExpansionOutcome> ClusterExpander::replay_plan(const topology::She
   return std::nullopt;
 }
 
-// A plan that meets a step it cannot make is planned again from where it stopped, up to
-// `replans` times (expand_cluster asks for it only once every plan has failed): a shelling of the mesh as it
-// is, whose plan holds the refinement's own vertices left in the cluster and the splits made late. Why: a
-// plan is exact only while the cluster mesh is the plan's, and two things make it differ, both seen on the
-// subdivided dunce-hat balls (docs/algorithm/expansion.md): a vertex a push left at p_c whose unexpanded link
-// became a cycle once the vertex it was pushed from expanded (so no drain can take it until a planned
-// neighbour goes), and a split made later than its step, after an apex of its simplex expanded.
+// A plan that meets a step it cannot make is planned again from where it stopped, up to `replans`
+// times (expand_cluster asks for it only once every plan has failed): a shelling of the mesh as it
+// is, whose plan holds the refinement's own vertices left in the cluster and the splits made late.
+// Why: a plan is exact only while the cluster mesh is the plan's, and two things make it differ,
+// both seen on the subdivided dunce-hat balls (docs/algorithm/expansion.md): a vertex a push left
+// at p_c whose unexpanded link became a cycle once the vertex it was pushed from expanded (so no
+// drain can take it until a planned neighbour goes), and a split made later than its step, after
+// an apex of its simplex expanded.
 ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank, ReplayPlans& plans,
                                                   std::size_t replans) {
   stats_.replay = {};
