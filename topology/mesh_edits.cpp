@@ -21,29 +21,39 @@ std::vector<T> intersect(const std::vector<T>& x, const std::vector<T>& y) {
 }
 
 // Link of v inside the boundary surface: boundary vertices and edges (x,y) with (v,x,y) a
-// boundary face. Sorted.
+// boundary face. Sorted. A face at v lies only in tets of v, so it is a boundary face when it
+// occurs once among them: counted there, not by a search around each face, which costs the
+// degree of the face's first vertex (a vertex at p_c can have thousands of tets, and the
+// collapses that undo pushes ask this for each of them).
 void boundary_link(const TetMesh& m, VertexId v, std::vector<VertexId>& verts, std::vector<Edge>& edges) {
   verts.clear();
   edges.clear();
   for (TetId t : m.tets_of(v)) {
     const Tet& x = m.tet(t);
-    for (int i = 0; i < 4; ++i) {
-      if (x[i] == v) continue;
-      const Triangle f = tet_face(x, i);
-      if (tets_around_face(m, f[0], f[1], f[2]).size() != 1) continue;
-      VertexId o[2];
-      int n = 0;
-      for (VertexId w : f)
-        if (w != v) o[n++] = w;
-      verts.push_back(o[0]);
-      verts.push_back(o[1]);
-      edges.push_back(o[0] < o[1] ? Edge{o[0], o[1]} : Edge{o[1], o[0]});
-    }
+    VertexId o[3];
+    int n = 0;
+    for (VertexId w : x)
+      if (w != v) o[n++] = w;
+    std::sort(o, o + 3);
+    edges.push_back(Edge{o[0], o[1]});
+    edges.push_back(Edge{o[0], o[2]});
+    edges.push_back(Edge{o[1], o[2]});
+  }
+  std::sort(edges.begin(), edges.end());
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i == 1) edges[kept++] = edges[i];
+    i = j;
+  }
+  edges.resize(kept);
+  for (const Edge& e : edges) {
+    verts.push_back(e[0]);
+    verts.push_back(e[1]);
   }
   std::sort(verts.begin(), verts.end());
   verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 }
 
 // The even permutation of t that puts x and y last, as (p, q, x, y). Precondition: x, y in t.

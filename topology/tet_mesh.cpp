@@ -108,12 +108,6 @@ std::vector<TetId> TetMesh::live_tets() const {
   return out;
 }
 
-int local_index(const Tet& t, VertexId v) {
-  for (int i = 0; i < 4; ++i)
-    if (t[i] == v) return i;
-  return -1;
-}
-
 Triangle tet_face(const Tet& t, int i) {
   switch (i) {
     case 0: return {t[1], t[2], t[3]};

@@ -64,8 +64,12 @@ class TetMesh {
 };
 
 // Small helpers on a single tet.
-// Local index (0..3) of v in t, or -1.
-[[nodiscard]] int local_index(const Tet& t, VertexId v);
+// Local index (0..3) of v in t, or -1. Inline: every adjacency query calls it per tet.
+[[nodiscard]] inline int local_index(const Tet& t, VertexId v) {
+  for (int i = 0; i < 4; ++i)
+    if (t[i] == v) return i;
+  return -1;
+}
 [[nodiscard]] inline bool contains(const Tet& t, VertexId v) { return local_index(t, v) >= 0; }
 // Face opposite local vertex i, ordered so that its normal points out of the tet (for a
 // positively oriented tet): i=0 -> (1,2,3), 1 -> (0,3,2), 2 -> (0,1,3), 3 -> (0,2,1).
