@@ -124,6 +124,7 @@ ExpansionSettings expansion_settings(const MapOptions& options, Clock::time_poin
   settings.replay = options.replay;
   settings.subcluster_size = options.subclusters;
   settings.before_fallback = options.before_fallback;
+  settings.threads = options.threads;
   settings.prescribed = &prescribed;  // read for boundary vertices only; new vertices are interior
   settings.input_vertices = input_vertices;
   settings.vertex_budget = std::max(tuning::vertex_budget_floor, tuning::vertex_budget_per_input_vertex * input_vertices);

@@ -164,7 +164,7 @@ void add_run_options(CLI::App& app, MapArgs& a) {
       ->type_name("MODE");
 }
 
-// --init and --threads: where the target starts, and how many stars are mapped at once.
+// --init and --threads: where the target starts, and how many stars (or attempts) run at once.
 void add_local_options(CLI::App& app, MapArgs& a) {
   const auto init = [&a](const std::string& text) {
     if (const auto kind = algorithm::parse_initial_map_kind(text); kind && *kind != algorithm::InitialMapKind::given)
@@ -191,7 +191,8 @@ void add_local_options(CLI::App& app, MapArgs& a) {
       ->type_name("INIT");
   add_parsed(
       app, "--threads", a.options.threads, [](const std::string& t) { return parse_integer(t, 0, 1024); },
-      "stars mapped at once, greedy shelling attempts after a NOBUENOSS, and\n"
+      "stars mapped at once, greedy shelling attempts after a NOBUENOSS, the\n"
+      "replay's attempts after it (each plan in each --shelled mode), and\n"
       "--shape's corner attempts (default 0: the machine's cores); the output\n"
       "is the same for every count")
       ->type_name("N");

@@ -1,9 +1,10 @@
 #pragma once
 // Independent tasks 0 .. count-1 on threads, with results that do not depend on the thread count:
-// the shelling attempts here, the stars of a local repair (algorithm/local/local_repair.cpp) and
-// the corner attempts of the boundary generators (generators/boundary_shapes.cpp). It lives in
-// topology, which stands alone, because that is the one layer all three depend on; it knows
-// nothing of meshes.
+// the shelling attempts here, the stars of a local repair (algorithm/local/local_repair.cpp), the
+// replay's attempts after a NOBUENOSS (algorithm/expansion/cluster_expansion.cpp) and the corner
+// attempts of the boundary generators (generators/boundary_shapes.cpp). It lives in topology,
+// which stands alone, because that is the one layer all of them depend on; it knows nothing of
+// meshes.
 #include <algorithm>
 #include <atomic>
 #include <cstddef>

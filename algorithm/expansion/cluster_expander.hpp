@@ -78,6 +78,9 @@ class ClusterExpander {
   // with the cluster left to the greedy loop when it handed over (shelling_replay.cpp).
   // `replans`: how often a plan that meets a step it cannot make is planned again from there.
   ExpansionOutcome replay(std::size_t plan_rank, ReplayPlans& plans, std::size_t replans);
+  // The plans replay() takes, ranked from this state once its chords are split (every attempt
+  // from the same state splits the same ones), so that the attempts need not rank them.
+  void rank_plans(ReplayPlans& plans);
   bool refine_by(VertexId v, RefinementStep step);  // cluster_expansion.hpp
   // After run() returned a runaway: the state to go back to.
   std::optional<Checkpoint> take_checkpoint() { return std::move(checkpoint_); }

@@ -1,6 +1,10 @@
 #include "algorithm/expansion/cluster_expansion.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <optional>
+#include <string_view>
 
 #include "algorithm/collapse/collapse_pass.hpp"
 #include "algorithm/expansion/cluster_expander.hpp"
@@ -11,6 +15,7 @@
 #include "algorithm/tuning.hpp"
 #include "algorithm/verify/invariants.hpp"
 #include "topology/complex_queries.hpp"
+#include "topology/indexed_tasks.hpp"
 #include "topology/mesh_edits.hpp"
 #include "topology/topological_expansion.hpp"
 
@@ -398,6 +403,96 @@ ExpansionOutcome expand_greedily(Embedding& e, ExpansionSettings s, MapStatistic
 
 }  // namespace
 
+namespace {
+
+// One attempt of the schedule after a NOBUENOSS: a plan of rank `rank`, in one --shelled mode,
+// planned again up to `replans` times where it fails.
+struct ReplayAttempt {
+  std::size_t rank;
+  ShelledMode mode;
+  std::size_t replans;
+};
+
+// One attempt from the state `e` and `stats` are in; `raised` counts the attempts in a raised
+// mode up to this one (the report's shelled_retries).
+ExpansionOutcome run_attempt(Embedding& e, MapStatistics& stats, const ExpansionSettings& s,
+                             detail::ReplayPlans& plans, const ReplayAttempt& a, std::size_t raised) {
+  ExpansionSettings replay = s;
+  replay.shelled = a.mode;
+  ExpansionOutcome out;
+  {
+    detail::ClusterExpander x(e, replay, stats);
+    out = x.replay(a.rank, plans, a.replans);
+  }
+  stats.replay.plans_tried = a.rank + 1;
+  stats.replay.shelled = a.mode;
+  stats.replay.shelled_retries = raised;
+  if (out.outcome == MapOutcome::success && stats.replay.handed_over) {
+    // A deferral is an experiment's way to meet a NOBUENOSS; the replay has led the cluster
+    // mesh past it, and the greedy loop goes on in the order without it (greedy_can_take_over
+    // checked that this order completes topologically too). Kept, it makes the loop expand the
+    // deferred vertices last, each among expanded neighbours only, where it churns.
+    ExpansionSettings greedy = replay;
+    greedy.replay = ReplayMode::off;
+    greedy.order.defer_first = greedy.order.defer_end = 0;
+    out = expand_greedily(e, greedy, stats);
+  }
+  return out;
+}
+
+// What one attempt run on a thread left: its end, its state (kept only where it can be the
+// result) and its trace rows, replayed in schedule order.
+struct AttemptRun {
+  ExpansionOutcome out;
+  std::optional<Embedding> state;
+  MapStatistics stats;
+  std::vector<TraceRow> trace;
+};
+
+// The attempts of `schedule` from the same start, `threads` at once: the result is the first one
+// in schedule order that does not end stuck (or the last one), exactly as one after the other,
+// whatever the thread count. An attempt above one that has not ended stuck is stopped, as
+// its result cannot be the run's. Each has its own stop control, which asks the run's own under
+// a lock (a stop hook need not be thread-safe); no progress of its own; its trace rows are kept.
+std::size_t run_attempts_on_threads(std::vector<AttemptRun>& runs, const std::vector<ReplayAttempt>& schedule,
+                                    const std::vector<std::size_t>& raised, const Embedding& start,
+                                    const MapStatistics& stats_start, const ExpansionSettings& s,
+                                    detail::ReplayPlans& plans, std::size_t threads) {
+  std::mutex lock;
+  std::atomic<std::size_t> ended{schedule.size()};  // lowest attempt not ended stuck
+  std::size_t finished = 0;
+  const std::size_t count = schedule.size();
+  const std::size_t lowest = topology::run_indexed(count, threads, [&](std::size_t k) {
+    AttemptRun& run = runs[k];
+    MapOptions stop_only;
+    stop_only.stop = [&, k](std::string_view) {
+      if (k > ended.load()) return true;
+      const std::lock_guard<std::mutex> hold(lock);
+      return s.control != nullptr && s.control->should_stop("expansion");
+    };
+    RunControl control(stop_only, s.start);
+    ExpansionSettings mine = s;
+    mine.control = &control;
+    mine.progress = nullptr;
+    mine.trace = nullptr;
+    if (s.trace) mine.trace = [&run](const TraceRow& row) { run.trace.push_back(row); };
+    run.state = start;
+    run.stats = stats_start;
+    if (start.stats) run.state->stats = &run.stats.filter;  // the predicate counters, its own too
+    run.out = run_attempt(*run.state, run.stats, mine, plans, schedule[k], raised[k]);
+    const bool done = run.out.outcome != MapOutcome::stuck;
+    for (std::size_t low = ended.load(); done && k < low && !ended.compare_exchange_weak(low, k);) {
+    }
+    if (!done && k + 1 < count) run.state.reset();  // only the last stuck one can be the result
+    const std::lock_guard<std::mutex> hold(lock);
+    if (s.control) s.control->report("replay attempts", ++finished, count);
+    return done;
+  });
+  return std::min(lowest, count - 1);
+}
+
+}  // namespace
+
 ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings, MapStatistics& stats) {
   ExpansionSettings s = settings;
   if (s.order.kind == topology::ExpansionOrderKind::strict_index) s.planned_vertices = e.num_vertices();
@@ -415,53 +510,56 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
   detail::ReplayPlans plans;
   const Embedding before_replay = e;
   const MapStatistics stats_before = stats;
-  const ShelledMode raised = std::max(s.shelled, ShelledMode::after_pushes);
+  const ShelledMode raised_mode = std::max(s.shelled, ShelledMode::after_pushes);
   std::vector<ShelledMode> modes{s.shelled};
-  if (s.raise_shelled && raised != s.shelled) modes.push_back(raised);
-  std::string first_failure;  // the run's own mode's, when a raised one ends the run
-  std::size_t raised_attempts = 0;
-  const auto attempt = [&](std::size_t rank, ShelledMode mode, std::size_t replans) {
-    ExpansionSettings replay = s;
-    replay.shelled = mode;
-    raised_attempts += mode != s.shelled;
-    ExpansionOutcome out;
-    {
-      detail::ClusterExpander x(e, replay, stats);
-      out = x.replay(rank, plans, replans);
-    }
-    stats.replay.plans_tried = rank + 1;
-    stats.replay.shelled = mode;
-    stats.replay.shelled_retries = raised_attempts;
-    if (out.outcome == MapOutcome::success && stats.replay.handed_over) {
-      // A deferral is an experiment's way to meet a NOBUENOSS; the replay has led the cluster
-      // mesh past it, and the greedy loop goes on in the order without it (greedy_can_take_over
-      // checked that this order completes topologically too). Kept, it makes the loop expand the
-      // deferred vertices last, each among expanded neighbours only, where it churns.
-      ExpansionSettings greedy = replay;
-      greedy.replay = ReplayMode::off;
-      greedy.order.defer_first = greedy.order.defer_end = 0;
-      out = expand_greedily(e, greedy, stats);
-    }
-    return out;
-  };
-  // The first attempt ranks the plans; the schedule follows from how many there are.
-  ExpansionOutcome out = attempt(0, modes.front(), 0);
-  struct Attempt {
-    std::size_t rank;
-    ShelledMode mode;
-    std::size_t replans;
-  };
-  std::vector<Attempt> schedule;
+  if (s.raise_shelled && raised_mode != s.shelled) modes.push_back(raised_mode);
+  // The plans first, on a copy (every attempt splits the same chords before it replays), so that
+  // every attempt can run on a thread; the schedule follows from how many plans there are.
+  {
+    Embedding copy = e;
+    MapStatistics scratch = stats;
+    if (copy.stats) copy.stats = &scratch.filter;
+    detail::ClusterExpander x(copy, s, scratch);
+    x.rank_plans(plans);
+  }
+  // Without a plan, one attempt says why.
+  std::vector<ReplayAttempt> schedule{{0, modes.front(), 0}};
   const std::size_t ranks = std::min(tuning::replay_plan_attempts, plans.best_first.size());
   for (std::size_t rank = 0; rank < ranks; ++rank)
-    for (const ShelledMode mode : modes) schedule.push_back({rank, mode, 0});
+    for (const ShelledMode mode : modes)
+      if (rank > 0 || mode != modes.front()) schedule.push_back({rank, mode, 0});
   for (std::size_t rank = 0; rank < ranks; ++rank)
     for (const ShelledMode mode : modes) schedule.push_back({rank, mode, tuning::replay_replans});
-  for (std::size_t k = 1; out.outcome == MapOutcome::stuck && k < schedule.size(); ++k) {
-    if (schedule[k - 1].mode == s.shelled && first_failure.empty()) first_failure = out.message;
-    e = before_replay;
-    stats = stats_before;
-    out = attempt(schedule[k].rank, schedule[k].mode, schedule[k].replans);
+  std::vector<std::size_t> raised(schedule.size(), 0);
+  for (std::size_t k = 0; k < schedule.size(); ++k)
+    raised[k] = (k > 0 ? raised[k - 1] : 0) + (schedule[k].mode != s.shelled);
+  // The first attempt's failure, should an attempt in a raised mode end the run.
+  std::string first_failure;
+  ExpansionOutcome out;
+  // A hook that looks at the state as it goes sees the attempts one after the other.
+  const std::size_t threads = s.before_fallback ? 1 : topology::thread_count(s.threads, schedule.size());
+  if (threads <= 1) {
+    for (std::size_t k = 0; k < schedule.size(); ++k) {
+      if (k > 0) {
+        e = before_replay;
+        stats = stats_before;
+      }
+      out = run_attempt(e, stats, s, plans, schedule[k], raised[k]);
+      if (out.outcome != MapOutcome::stuck) break;
+      if (k == 0) first_failure = out.message;
+    }
+  } else {
+    std::vector<AttemptRun> runs(schedule.size());
+    const std::size_t chosen =
+        run_attempts_on_threads(runs, schedule, raised, before_replay, stats_before, s, plans, threads);
+    if (s.trace)
+      for (std::size_t k = 0; k <= chosen; ++k)
+        for (const TraceRow& row : runs[k].trace) s.trace(row);
+    first_failure = runs[0].out.message;
+    e = std::move(*runs[chosen].state);
+    e.stats = before_replay.stats;
+    stats = std::move(runs[chosen].stats);
+    out = std::move(runs[chosen].out);
   }
   if (out.outcome != MapOutcome::success && stats.replay.shelled != s.shelled && !first_failure.empty())
     out.message +=

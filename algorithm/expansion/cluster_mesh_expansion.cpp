@@ -109,6 +109,12 @@ ExpansionOutcome ClusterExpander::replay(std::size_t plan_rank, ReplayPlans& pla
   return planned;
 }
 
+void ClusterExpander::rank_plans(ReplayPlans& plans) {
+  count_cluster();
+  replay_split_chords();
+  rank_replay_plans(plans, false);
+}
+
 // One popped candidate (Alg. 1 lines 9-11 for it).
 void ClusterExpander::handle(const Entry& entry) {
   const VertexId v = entry.v;

@@ -88,7 +88,8 @@ void check_realisation(const alg::MapProblem& p, const alg::MapResult& r) {
 // expansion takes over, and maps (verified).
 alg::MapResult map_past_the_hat(std::uint32_t collars, cmx::generators::BoundaryShape shape,
                                 std::uint64_t seed, bool check,
-                                alg::ShelledMode shelled = alg::ShelledMode::when_stuck) {
+                                alg::ShelledMode shelled = alg::ShelledMode::when_stuck,
+                                std::size_t threads = 0, std::vector<alg::TraceRow>* rows = nullptr) {
   std::size_t hat = 0;
   const topo::TetMesh ball = topo::dunce_hat_ball(&hat, collars);
   const alg::MapProblem p = combinatorial_problem(facets_of(ball), shape, seed);
@@ -96,6 +97,8 @@ alg::MapResult map_past_the_hat(std::uint32_t collars, cmx::generators::Boundary
   alg::MapOptions o = combinatorial_options();
   o.check = check;
   o.shelled = shelled;
+  o.threads = threads;
+  if (rows) o.trace = [rows](const alg::TraceRow& row) { rows->push_back(row); };
   o.order =
       *topo::parse_expansion_order("priority,defer:" + std::to_string(n - hat) + "-" + std::to_string(n));
   alg::MapResult r = alg::map_to_domain(p, o);
@@ -375,6 +378,42 @@ TEST_CASE(
   CHECK(r.stats.replay.replans == 0);
   CHECK(r.stats.replay.splits > 0);
   CHECK(r.stats.replay.splits < r.stats.replay.expansions);
+}
+
+TEST_CASE("the attempts after a NOBUENOSS: the same map, report and trace rows on one thread as on several") {
+  // The 32-collar ball again: its best plan fails in both --shelled modes and the next plan maps,
+  // so three attempts are made from the same state. On threads they run at once, the ones after
+  // the one that maps are stopped, and the result is still the first in the schedule that maps.
+  std::vector<alg::TraceRow> rows_one, rows_many;
+  const auto sphere = cmx::generators::BoundaryShape::sphere;
+  const alg::MapResult one =
+      map_past_the_hat(32, sphere, 1234, false, alg::ShelledMode::when_stuck, 1, &rows_one);
+  REQUIRE(one.stats.replay.plans_tried == 2);
+  const alg::MapResult many =
+      map_past_the_hat(32, sphere, 1234, false, alg::ShelledMode::when_stuck, 3, &rows_many);
+  CHECK(many.message == one.message);
+  CHECK(many.tets == one.tets);
+  CHECK(many.target == one.target);
+  CHECK(many.doubles.target == one.doubles.target);
+  const auto& a = one.stats.replay;
+  const auto& b = many.stats.replay;
+  CHECK(b.plans_tried == a.plans_tried);
+  CHECK(b.shelled_retries == a.shelled_retries);
+  CHECK(b.expansions == a.expansions);
+  CHECK(b.splits == a.splits);
+  CHECK(b.drained == a.drained);
+  CHECK(many.stats.expansions_simple == one.stats.expansions_simple);
+  CHECK(many.stats.lps == one.stats.lps);
+  CHECK(many.stats.filter.total() == one.stats.filter.total());
+  REQUIRE(rows_many.size() == rows_one.size());
+  for (std::size_t i = 0; i < rows_one.size(); ++i) {
+    CAPTURE(i);
+    CHECK(rows_many[i].step == rows_one[i].step);
+    CHECK(rows_many[i].vertex == rows_one[i].vertex);
+    CHECK(std::string(rows_many[i].kind) == rows_one[i].kind);
+    CHECK(rows_many[i].bits == rows_one[i].bits);
+    CHECK(rows_many[i].cluster_left == rows_one[i].cluster_left);
+  }
 }
 
 TEST_CASE(
