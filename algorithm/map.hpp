@@ -70,7 +70,8 @@ std::string_view to_string(ReplayMode m);
 // What the progress callback gets. During the expansion: the cluster counts below. In later
 // phases ("collapse", "doubles", "verification"): done of total steps (total 0: unknown).
 struct MapProgress {
-  const char* phase = "expansion";            // expansion, collapse, doubles, verification, shelling search
+  const char* phase = "expansion";            // expansion, collapse, doubles, verification, shelling search, stars (a
+                                              // local repair), replay attempts (after a NOBUENOSS, on threads)
   std::size_t done = 0, total = 0;            // phases other than expansion: steps done / all (0: unknown)
   std::size_t expanded = 0, remaining = 0;    // cluster vertices expanded so far / still left
   std::size_t splits = 0;                     // vertices added so far (preprocessing included)
