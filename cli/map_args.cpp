@@ -192,9 +192,9 @@ void add_local_options(CLI::App& app, MapArgs& a) {
   add_parsed(
       app, "--threads", a.options.threads, [](const std::string& t) { return parse_integer(t, 0, 1024); },
       "stars mapped at once, greedy shelling attempts after a NOBUENOSS, the\n"
-      "replay's attempts after it (each plan in each --shelled mode), and\n"
-      "--shape's corner attempts (default 0: the machine's cores); the output\n"
-      "is the same for every count")
+      "replay's plans ranked and its attempts after it (each plan in each\n"
+      "--shelled mode), and --shape's corner attempts (default 0: the\n"
+      "machine's cores); the output is the same for every count")
       ->type_name("N");
 }
 

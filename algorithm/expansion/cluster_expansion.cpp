@@ -473,6 +473,7 @@ std::size_t run_attempts_on_threads(std::vector<AttemptRun>& runs, const std::ve
     RunControl control(stop_only, s.start);
     ExpansionSettings mine = s;
     mine.control = &control;
+    mine.threads = 1;  // the attempts are what runs on the threads (a plan made again is ranked on this one)
     mine.progress = nullptr;
     mine.trace = nullptr;
     if (s.trace) mine.trace = [&run](const TraceRow& row) { run.trace.push_back(row); };

@@ -62,8 +62,8 @@ struct ExpansionSettings {
   std::size_t subcluster_size = 4;        // largest subcluster tried (< 2: off; MapOptions::subclusters)
   // Runaway restarts (below): how many, at most; 0 turns the detection off.
   std::size_t max_restarts = 8;
-  // The attempts of the replay after the first (expand_cluster) run this many at once (0: the
-  // machine's cores); the result is the same for every count.
+  // The replay's plans are ranked, and its attempts (expand_cluster) run, this many at once (0:
+  // the machine's cores); the result is the same for every count.
   std::size_t threads = 1;
   // MapOptions::before_fallback: called with the state and v just before the shelling
   // star-shapification tries v after bends and pushes failed on it.

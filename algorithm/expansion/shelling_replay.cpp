@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <unordered_set>
@@ -14,6 +15,7 @@
 #include "topology/chords.hpp"
 #include "topology/complex_queries.hpp"
 #include "topology/fixed_boundary_replay.hpp"
+#include "topology/indexed_tasks.hpp"
 #include "topology/shelling.hpp"
 #include "topology/topological_expansion.hpp"
 
@@ -143,26 +145,43 @@ void ClusterExpander::rank_replay_plans(ReplayPlans& plans, bool from_here) {
   // The cluster now: every interior vertex at the start, the shelling's cheapest steps first.
   const std::vector<char> interior = e_.unexpanded;
   const std::size_t seeds = s_.replay == ReplayMode::until_greedy ? tuning::replay_plan_seeds : 1;
-  std::vector<std::pair<std::size_t, topology::ShellingExpansion>> ranked;  // (hand-over, plan)
-  for (std::uint64_t seed = 1; seed <= seeds; ++seed) {
-    if (seed > 1 && check_limits()) break;
+  // Per seed, on `threads` threads (each reads the mesh and works on its own copy): its plan and
+  // the expansions before greedy expansion could take over, or why it has none. Merged in seed
+  // order, so the ranking is the same for every thread count.
+  struct SeedPlan {
+    bool skipped = false;  // the run was stopped before this seed
+    std::size_t attempts = 0, handover = 0;
+    std::optional<topology::ShellingExpansion> plan;
+    std::string why;
+  };
+  std::vector<SeedPlan> per_seed(seeds);
+  std::mutex lock;
+  topology::run_indexed(seeds, topology::thread_count(s_.threads, seeds), [&](std::size_t i) {
+    SeedPlan& out = per_seed[i];
+    if (i > 0) {
+      const std::lock_guard<std::mutex> hold(lock);
+      if (check_limits()) {
+        out.skipped = true;
+        return false;
+      }
+    }
     topology::ShellingOptions options;  // one seeded attempt series on this thread
     options.interior = &interior;
-    options.seed = seed;
+    options.seed = i + 1;
     const topology::ShellingResult shelling = topology::find_shelling(e_.mesh, options);
-    plans.shelling_attempts += shelling.attempts;
+    out.attempts = shelling.attempts;
     if (!shelling.found) {
-      if (plans.why.empty()) plans.why = "found no shelling: " + shelling.message;
-      continue;
+      out.why = "found no shelling: " + shelling.message;
+      return false;
     }
     topology::ShellingExpansion plan = topology::shelling_to_expansion_sequence(e_.mesh, shelling.order);
     if (!plan.ok) {
-      if (plans.why.empty()) plans.why = "could not convert the shelling: " + plan.message;
-      continue;
+      out.why = "could not convert the shelling: " + plan.message;
+      return false;
     }
     if (seeds == 1) {
-      ranked.emplace_back(0, std::move(plan));
-      break;
+      out.plan = std::move(plan);
+      return false;
     }
     std::size_t asked = 0, next = 0;
     const topology::FixedBoundaryReplay sim = topology::replay_with_fixed_boundary(
@@ -174,13 +193,21 @@ void ClusterExpander::rank_replay_plans(ReplayPlans& plans, bool from_here) {
         },
         from_here ? &interior : nullptr);
     if (from_here && (sim.eq1_failures > 0 || !(sim.stopped || sim.ok))) {
-      if (plans.why.empty())
-        plans.why = "the topological replay of a plan made there failed: " +
-                    (sim.first_failure.empty() ? std::to_string(sim.left) + " cluster vertices left"
-                                               : sim.first_failure);
-      continue;
+      out.why = "the topological replay of a plan made there failed: " +
+                (sim.first_failure.empty() ? std::to_string(sim.left) + " cluster vertices left"
+                                           : sim.first_failure);
+      return false;
     }
-    ranked.emplace_back(sim.stopped ? sim.expansions : plan.steps.size() + 1, std::move(plan));
+    out.handover = sim.stopped ? sim.expansions : plan.steps.size() + 1;
+    out.plan = std::move(plan);
+    return false;
+  });
+  std::vector<std::pair<std::size_t, topology::ShellingExpansion>> ranked;  // (hand-over, plan)
+  for (SeedPlan& seed : per_seed) {
+    if (seed.skipped) break;
+    plans.shelling_attempts += seed.attempts;
+    if (plans.why.empty()) plans.why = seed.why;
+    if (seed.plan) ranked.emplace_back(seed.handover, std::move(*seed.plan));
   }
   std::stable_sort(ranked.begin(), ranked.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
