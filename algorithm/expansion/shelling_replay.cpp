@@ -44,6 +44,56 @@ bool can_take_over(const topology::TetMesh& m, const topology::ExpansionOrder& o
          !topology::topological_expansion(m, plain, unexpanded).stuck;
 }
 
+// One seed's plan for rank_replay_plans, or why it has none: the shelling the search finds with
+// this seed, converted by Alg. 2, and (`simulate`) the expansions of its topological replay before
+// greedy expansion could take over (its steps + 1 when it never could).
+struct SeedPlan {
+  bool skipped = false;  // the run was stopped before this seed
+  std::size_t attempts = 0, handover = 0;
+  std::optional<topology::ShellingExpansion> plan;
+  std::string why;
+};
+
+SeedPlan plan_of_seed(const topology::TetMesh& mesh, const std::vector<char>& interior, std::uint64_t seed,
+                      bool simulate, bool from_here, const topology::ExpansionOrder& order) {
+  SeedPlan out;
+  topology::ShellingOptions options;  // one seeded attempt series on this thread
+  options.interior = &interior;
+  options.seed = seed;
+  const topology::ShellingResult shelling = topology::find_shelling(mesh, options);
+  out.attempts = shelling.attempts;
+  if (!shelling.found) {
+    out.why = "found no shelling: " + shelling.message;
+    return out;
+  }
+  topology::ShellingExpansion plan = topology::shelling_to_expansion_sequence(mesh, shelling.order);
+  if (!plan.ok) {
+    out.why = "could not convert the shelling: " + plan.message;
+    return out;
+  }
+  if (simulate) {
+    std::size_t asked = 0, next = 0;
+    const topology::FixedBoundaryReplay sim = topology::replay_with_fixed_boundary(
+        mesh, plan, 0,
+        [&](const topology::TetMesh& m, const std::vector<char>& unexpanded) {
+          if (++asked < next) return false;
+          next = next_handover_check(asked);
+          return can_take_over(m, order, unexpanded);
+        },
+        from_here ? &interior : nullptr);
+    // Planned again part-way, a plan whose topological replay fails Eq. (1) is not kept.
+    if (from_here && (sim.eq1_failures > 0 || !(sim.stopped || sim.ok))) {
+      out.why = "the topological replay of a plan made there failed: " +
+                (sim.first_failure.empty() ? std::to_string(sim.left) + " cluster vertices left"
+                                           : sim.first_failure);
+      return out;
+    }
+    out.handover = sim.stopped ? sim.expansions : plan.steps.size() + 1;
+  }
+  out.plan = std::move(plan);
+  return out;
+}
+
 bool simplex_exists(const topology::TetMesh& m, const VertexId* s, int n) {
   return n == 2 ? !topology::tets_around_edge(m, s[0], s[1]).empty()
                 : !topology::tets_around_face(m, s[0], s[1], s[2]).empty();
@@ -145,61 +195,17 @@ void ClusterExpander::rank_replay_plans(ReplayPlans& plans, bool from_here) {
   // The cluster now: every interior vertex at the start, the shelling's cheapest steps first.
   const std::vector<char> interior = e_.unexpanded;
   const std::size_t seeds = s_.replay == ReplayMode::until_greedy ? tuning::replay_plan_seeds : 1;
-  // Per seed, on `threads` threads (each reads the mesh and works on its own copy): its plan and
-  // the expansions before greedy expansion could take over, or why it has none. Merged in seed
+  // Per seed, on `threads` threads (each reads the mesh and works on its own copy), merged in seed
   // order, so the ranking is the same for every thread count.
-  struct SeedPlan {
-    bool skipped = false;  // the run was stopped before this seed
-    std::size_t attempts = 0, handover = 0;
-    std::optional<topology::ShellingExpansion> plan;
-    std::string why;
-  };
   std::vector<SeedPlan> per_seed(seeds);
   std::mutex lock;
   topology::run_indexed(seeds, topology::thread_count(s_.threads, seeds), [&](std::size_t i) {
-    SeedPlan& out = per_seed[i];
     if (i > 0) {
       const std::lock_guard<std::mutex> hold(lock);
-      if (check_limits()) {
-        out.skipped = true;
-        return false;
-      }
+      per_seed[i].skipped = check_limits().has_value();
     }
-    topology::ShellingOptions options;  // one seeded attempt series on this thread
-    options.interior = &interior;
-    options.seed = i + 1;
-    const topology::ShellingResult shelling = topology::find_shelling(e_.mesh, options);
-    out.attempts = shelling.attempts;
-    if (!shelling.found) {
-      out.why = "found no shelling: " + shelling.message;
-      return false;
-    }
-    topology::ShellingExpansion plan = topology::shelling_to_expansion_sequence(e_.mesh, shelling.order);
-    if (!plan.ok) {
-      out.why = "could not convert the shelling: " + plan.message;
-      return false;
-    }
-    if (seeds == 1) {
-      out.plan = std::move(plan);
-      return false;
-    }
-    std::size_t asked = 0, next = 0;
-    const topology::FixedBoundaryReplay sim = topology::replay_with_fixed_boundary(
-        e_.mesh, plan, 0,
-        [&](const topology::TetMesh& m, const std::vector<char>& unexpanded) {
-          if (++asked < next) return false;
-          next = next_handover_check(asked);
-          return can_take_over(m, s_.order, unexpanded);
-        },
-        from_here ? &interior : nullptr);
-    if (from_here && (sim.eq1_failures > 0 || !(sim.stopped || sim.ok))) {
-      out.why = "the topological replay of a plan made there failed: " +
-                (sim.first_failure.empty() ? std::to_string(sim.left) + " cluster vertices left"
-                                           : sim.first_failure);
-      return false;
-    }
-    out.handover = sim.stopped ? sim.expansions : plan.steps.size() + 1;
-    out.plan = std::move(plan);
+    if (!per_seed[i].skipped)
+      per_seed[i] = plan_of_seed(e_.mesh, interior, i + 1, seeds > 1, from_here, s_.order);
     return false;
   });
   std::vector<std::pair<std::size_t, topology::ShellingExpansion>> ranked;  // (hand-over, plan)
