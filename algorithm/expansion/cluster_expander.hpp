@@ -24,10 +24,9 @@
 
 namespace cmx::algorithm::detail {
 
-// The plans a replay can take, best first (ClusterExpander::rank_replay_plans), found once and
-// kept across the attempts of expand_cluster: each attempt starts from the same state.
+// The plans a replay can take, best first (ClusterExpander::rank_plans), found once and read by
+// every attempt of expand_cluster, on any thread: each attempt starts from the same state.
 struct ReplayPlans {
-  bool ranked = false;
   std::vector<topology::ShellingExpansion> best_first;
   // Per plan: the expansions of its topological replay before greedy expansion could take over
   // (its steps + 1 when it never could; 0 when not asked, as for full).
@@ -77,7 +76,7 @@ class ClusterExpander {
   // Paper Sec. 4.3: the replay of a shelling (MapOptions::replay), once, before run(); success
   // with the cluster left to the greedy loop when it handed over (shelling_replay.cpp).
   // `replans`: how often a plan that meets a step it cannot make is planned again from there.
-  ExpansionOutcome replay(std::size_t plan_rank, ReplayPlans& plans, std::size_t replans);
+  ExpansionOutcome replay(std::size_t plan_rank, const ReplayPlans& plans, std::size_t replans);
   // The plans replay() takes, ranked from this state once its chords are split (every attempt
   // from the same state splits the same ones), so that the attempts need not rank them.
   void rank_plans(ReplayPlans& plans);
@@ -222,11 +221,12 @@ class ClusterExpander {
   bool isolate(VertexId x);
 
   // --- the replay of a shelling (paper Sec. 4.3, Alg. 2; shelling_replay.cpp) ----------------
-  // From the shrunk state: every chord split, a shelling found (cheapest steps first,
-  // topology::ShellingOptions::interior) and converted by Alg. 2, and each step made: a split of
-  // an all-cluster simplex at p_c, an expansion of the planned vertex with all the refinement,
-  // then the refinement's own cluster vertices drained. `stats_.replay` counts.
-  ExpansionOutcome replay_shelling(std::size_t plan_rank, ReplayPlans& plans, std::size_t replans);
+  // From the shrunk state: every chord split, then the plan of rank `plan_rank` (a shelling found
+  // with its cheapest steps first, topology::ShellingOptions::interior, converted by Alg. 2 and
+  // ranked by rank_plans) and each step made: a split of an all-cluster simplex at p_c, an
+  // expansion of the planned vertex with all the refinement, then the refinement's own cluster
+  // vertices drained. `stats_.replay` counts.
+  ExpansionOutcome replay_shelling(std::size_t plan_rank, const ReplayPlans& plans, std::size_t replans);
   void replay_split_chords();
   bool replay_expand(VertexId v);
   // The plan's vertices: every vertex below `first` (the mesh when the plan was made) and the

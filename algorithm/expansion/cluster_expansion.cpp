@@ -401,10 +401,6 @@ ExpansionOutcome expand_greedily(Embedding& e, ExpansionSettings s, MapStatistic
   }
 }
 
-}  // namespace
-
-namespace {
-
 // One attempt of the schedule after a NOBUENOSS: a plan of rank `rank`, in one --shelled mode,
 // planned again up to `replans` times where it fails.
 struct ReplayAttempt {
@@ -416,7 +412,7 @@ struct ReplayAttempt {
 // One attempt from the state `e` and `stats` are in; `raised` counts the attempts in a raised
 // mode up to this one (the report's shelled_retries).
 ExpansionOutcome run_attempt(Embedding& e, MapStatistics& stats, const ExpansionSettings& s,
-                             detail::ReplayPlans& plans, const ReplayAttempt& a, std::size_t raised) {
+                             const detail::ReplayPlans& plans, const ReplayAttempt& a, std::size_t raised) {
   ExpansionSettings replay = s;
   replay.shelled = a.mode;
   ExpansionOutcome out;
@@ -457,7 +453,7 @@ struct AttemptRun {
 std::size_t run_attempts_on_threads(std::vector<AttemptRun>& runs, const std::vector<ReplayAttempt>& schedule,
                                     const std::vector<std::size_t>& raised, const Embedding& start,
                                     const MapStatistics& stats_start, const ExpansionSettings& s,
-                                    detail::ReplayPlans& plans, std::size_t threads) {
+                                    const detail::ReplayPlans& plans, std::size_t threads) {
   std::mutex lock;
   std::atomic<std::size_t> ended{schedule.size()};  // lowest attempt not ended stuck
   std::size_t finished = 0;
@@ -537,7 +533,8 @@ ExpansionOutcome expand_cluster(Embedding& e, const ExpansionSettings& settings,
   // The first attempt's failure, should an attempt in a raised mode end the run.
   std::string first_failure;
   ExpansionOutcome out;
-  // A hook that looks at the state as it goes sees the attempts one after the other.
+  // One after the other, attempts report progress and trace rows as they go; a hook that looks at
+  // the state as it goes (before_fallback) sees them so whatever the thread count.
   const std::size_t threads = s.before_fallback ? 1 : topology::thread_count(s.threads, schedule.size());
   if (threads <= 1) {
     for (std::size_t k = 0; k < schedule.size(); ++k) {

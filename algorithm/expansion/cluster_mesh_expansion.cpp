@@ -102,7 +102,8 @@ ExpansionOutcome ClusterExpander::run() {
   return {MapOutcome::success, {}};
 }
 
-ExpansionOutcome ClusterExpander::replay(std::size_t plan_rank, ReplayPlans& plans, std::size_t replans) {
+ExpansionOutcome ClusterExpander::replay(std::size_t plan_rank, const ReplayPlans& plans,
+                                         std::size_t replans) {
   count_cluster();
   ExpansionOutcome planned = replay_shelling(plan_rank, plans, replans);
   report_progress(planned.outcome != MapOutcome::success || cluster_ == 0);

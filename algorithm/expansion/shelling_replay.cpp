@@ -191,7 +191,6 @@ bool ClusterExpander::greedy_can_take_over() const {
 // the refinement's own vertices in it); the topological replays start there, and a plan whose
 // topological replay fails Eq. (1) before it could hand over is not kept.
 void ClusterExpander::rank_replay_plans(ReplayPlans& plans, bool from_here) {
-  plans.ranked = true;
   // The cluster now: every interior vertex at the start, the shelling's cheapest steps first.
   const std::vector<char> interior = e_.unexpanded;
   const std::size_t seeds = s_.replay == ReplayMode::until_greedy ? tuning::replay_plan_seeds : 1;
@@ -369,12 +368,11 @@ std::optional<ExpansionOutcome> ClusterExpander::replay_plan(const topology::She
 // at p_c whose unexpanded link became a cycle once the vertex it was pushed from expanded (so no
 // drain can take it until a planned neighbour goes), and a split made later than its step, after
 // an apex of its simplex expanded.
-ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank, ReplayPlans& plans,
+ExpansionOutcome ClusterExpander::replay_shelling(std::size_t plan_rank, const ReplayPlans& plans,
                                                   std::size_t replans) {
   stats_.replay = {};
   stats_.replay.ran = true;
   replay_split_chords();
-  if (!plans.ranked) rank_replay_plans(plans, false);
   stats_.replay.shelling_attempts = plans.shelling_attempts;
   stats_.replay.plans = plans.best_first.size();
   if (plan_rank >= plans.best_first.size())
